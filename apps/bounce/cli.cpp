@@ -1,0 +1,258 @@
+#include "cli.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+#include "bounce/pair/mixing.hpp"
+
+namespace bounce::cli {
+
+void NumberOptions::add(const std::string& name, const std::string& help) {
+  options_[name] = app_->add_option(name, text_[name], help);
+}
+
+bool NumberOptions::given(const std::string& name) const {
+  auto it = options_.find(name);
+  return it != options_.end() && it->second->count() > 0;
+}
+
+std::optional<double> NumberOptions::get(const std::string& name) const {
+  if (!given(name)) return std::nullopt;
+  const std::string& text = text_.at(name);
+  double value = 0.0;
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(begin, end, value);
+  if (ec != std::errc() || ptr != end || text.empty()) {
+    throw InvalidArgument(name, text.empty() ? "\"\"" : text, "a number");
+  }
+  return value;
+}
+
+std::string NumberOptions::text(const std::string& name) const {
+  auto it = text_.find(name);
+  return it == text_.end() ? std::string() : it->second;
+}
+
+double NumberOptions::require(const std::string& name, const std::string& what) const {
+  auto value = get(name);
+  if (!value) throw InvalidArgument(name, "(not given)", what);
+  return *value;
+}
+
+BodyOptions::BodyOptions(CLI::App* app) : app_(app), numbers_(app) {
+  app->add_option("--material", material_, "body 1 material from the table (see `bounce materials`)");
+  numbers_.add("--E", "body 1 Young's modulus [Pa] (overrides the material)");
+  numbers_.add("--nu", "body 1 Poisson ratio (overrides the material)");
+  numbers_.add("--density", "body 1 density [kg/m^3] (overrides the material)");
+  numbers_.add("--gamma", "body 1 surface energy (work of adhesion) [J/m^2]");
+  numbers_.add("--radius", "body 1 radius [m]");
+  app->add_option("--material2", material2_, "body 2 material (default: body 1's)");
+  numbers_.add("--E2", "body 2 Young's modulus [Pa]");
+  numbers_.add("--nu2", "body 2 Poisson ratio");
+  numbers_.add("--density2", "body 2 density [kg/m^3]");
+  numbers_.add("--gamma2", "body 2 surface energy [J/m^2]");
+  numbers_.add("--radius2", "body 2 radius [m] (default: body 1's)");
+  app->add_flag("--wall", wall_, "body 2 is a flat elastic wall (of body 2's material)");
+  app->add_flag("--rigid-wall", rigid_wall_, "body 2 is a flat, ideally rigid wall");
+  app->add_option("--materials-file", materials_file_,
+                  "TOML materials table to use instead of the built-in one");
+}
+
+MaterialTable BodyOptions::table() const {
+  if (materials_file_.empty()) return MaterialTable::builtin();
+  return MaterialTable::from_file(materials_file_);
+}
+
+Material BodyOptions::resolve_material(const MaterialTable& table, bool second,
+                                       const std::optional<Material>& fallback) const {
+  const std::string suffix = second ? "2" : "";
+  const std::string& name = second ? material2_ : material_;
+  Material m;
+  bool have_base = false;
+  if (!name.empty()) {
+    try {
+      m = table.at(name);
+    } catch (const InvalidArgument& e) {
+      throw e.renamed("--material" + suffix);
+    }
+    have_base = true;
+  } else if (fallback) {
+    m = *fallback;
+    have_base = true;
+  }
+  auto take = [&](const std::string& option, double& field) {
+    if (auto v = numbers_.get(option + suffix)) {
+      field = *v;
+    } else if (!have_base) {
+      throw InvalidArgument(option + suffix, "(not given)",
+                            fmt::format("a value, or --material{} NAME", suffix));
+    }
+  };
+  take("--E", m.youngs_modulus);
+  take("--nu", m.poisson_ratio);
+  take("--density", m.density);
+  if (auto g = numbers_.get("--gamma" + suffix)) m.surface_energy = *g;
+  const bool overridden = numbers_.given("--E" + suffix) || numbers_.given("--nu" + suffix) ||
+                          numbers_.given("--density" + suffix) ||
+                          numbers_.given("--gamma" + suffix);
+  if (overridden && !m.name.empty()) m.name += " (modified)";
+  return m;
+}
+
+Pair BodyOptions::pair() const {
+  const MaterialTable materials = table();
+  if (wall_ && rigid_wall_) {
+    throw InvalidArgument("--rigid-wall", "true", "either --wall or --rigid-wall, not both");
+  }
+  const Material m1 = resolve_material(materials, false, std::nullopt);
+  const Material m2 = resolve_material(materials, true, m1);
+  const double radius1 = numbers_.require("--radius", "a radius > 0 m for body 1");
+  Body b1 = sphere(m1, radius1);
+  Body b2;
+  if (wall_ || rigid_wall_) {
+    if (numbers_.given("--radius2")) {
+      throw InvalidArgument("--radius2", numbers_.text("--radius2"),
+                            "no --radius2 with --wall/--rigid-wall");
+    }
+    b2 = rigid_wall_ ? rigid_wall(m2) : wall(m2);
+  } else {
+    b2 = sphere(m2, numbers_.get("--radius2").value_or(radius1));
+  }
+  try {
+    return Pair(b1, b2);
+  } catch (const InvalidArgument& e) {
+    throw e.renamed(option_name(e.parameter()));
+  }
+}
+
+std::vector<double> parse_range(const std::string& option, const std::string& text, bool log) {
+  static const std::regex pattern(R"(^([^:]+):([^:]+):([0-9]+)$)");
+  std::smatch match;
+  const std::string allowed = "LO:HI:N with numbers LO <= HI and an integer N >= 1";
+  if (!std::regex_match(text, match, pattern)) throw InvalidArgument(option, text, allowed);
+  auto number = [&](const std::string& s) {
+    double v = 0.0;
+    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(v)) {
+      throw InvalidArgument(option, text, allowed);
+    }
+    return v;
+  };
+  const double lo = number(match[1]);
+  const double hi = number(match[2]);
+  const long n = std::stol(match[3]);
+  if (n < 1 || n > 10'000'000 || lo > hi) throw InvalidArgument(option, text, allowed);
+  if (log && lo <= 0.0) throw InvalidArgument(option, text, "LO > 0 with --log");
+  std::vector<double> values(static_cast<std::size_t>(n));
+  for (long i = 0; i < n; ++i) {
+    const double f = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
+    values[static_cast<std::size_t>(i)] =
+        log ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo))) : lo + f * (hi - lo);
+  }
+  values.back() = hi;
+  return values;
+}
+
+std::string option_name(const std::string& parameter) {
+  static const std::regex body(R"(^body([12])\.(\w+)$)");
+  static const std::regex plain(R"(^[a-z][a-z0-9_]*$)");
+  std::smatch match;
+  if (std::regex_match(parameter, match, body)) {
+    return "--" + match[2].str() + (match[1] == "2" ? "2" : "");
+  }
+  if (std::regex_match(parameter, plain)) {
+    std::string out = "--" + parameter;
+    for (char& c : out) c = c == '_' ? '-' : c;
+    return out;
+  }
+  return parameter;
+}
+
+nlohmann::json pair_json(const Pair& pair) {
+  auto body = [](const Body& b) {
+    nlohmann::json j;
+    j["material"] = b.material.name;
+    j["youngs_modulus"] = b.material.youngs_modulus;
+    j["poisson_ratio"] = b.material.poisson_ratio;
+    j["density"] = b.material.density;
+    j["surface_energy"] = b.material.surface_energy ? nlohmann::json(*b.material.surface_energy)
+                                                   : nlohmann::json(nullptr);
+    if (b.is_wall()) {
+      j["kind"] = b.rigid ? "rigid-wall" : "wall";
+    } else {
+      j["kind"] = "sphere";
+      j["radius"] = b.radius;
+      j["mass"] = b.mass();
+    }
+    return j;
+  };
+  nlohmann::json j;
+  j["body1"] = body(pair.body1());
+  j["body2"] = body(pair.body2());
+  j["effective_radius"] = pair.effective_radius();
+  j["effective_mass"] = pair.effective_mass();
+  j["effective_modulus"] = pair.effective_modulus();
+  j["hertz_compliance_d"] = pair.hertz_compliance_d();
+  j["hertz_constant"] = pair.hertz_constant();
+  j["tangential_mass_factor"] = pair.tangential_mass_factor();
+  j["surface_energy"] = pair.surface_energy() ? nlohmann::json(*pair.surface_energy())
+                                              : nlohmann::json(nullptr);
+  return j;
+}
+
+namespace {
+void check_finite(const nlohmann::json& value, const std::string& path) {
+  if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+    throw NumericalError("result " + path + " is not finite; refusing to print it");
+  }
+  if (value.is_object()) {
+    for (const auto& [key, item] : value.items()) check_finite(item, path + "." + key);
+  } else if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      check_finite(value[i], path + "[" + std::to_string(i) + "]");
+    }
+  }
+}
+}  // namespace
+
+void print_json(const nlohmann::json& value) {
+  check_finite(value, "$");
+  std::cout << value.dump(2) << '\n';
+}
+
+std::string csv_row(const std::vector<double>& values) {
+  std::string row;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!std::isfinite(values[i])) {
+      throw NumericalError(fmt::format("CSV column {} is not finite; refusing to print it", i + 1));
+    }
+    if (i) row += ',';
+    row += fmt::format("{}", values[i]);
+  }
+  return row;
+}
+
+int run_guarded(const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const InvalidArgument& e) {
+    InvalidArgument named = e.renamed(option_name(e.parameter()));
+    std::cerr << "bounce: error: " << named.what() << '\n';
+    return 2;
+  } catch (const NumericalError& e) {
+    std::cerr << "bounce: numerical error: " << e.what() << '\n';
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "bounce: internal error: " << e.what() << '\n';
+    return 4;
+  }
+}
+
+}  // namespace bounce::cli

@@ -1,0 +1,87 @@
+#pragma once
+// Shared plumbing of the bounce CLI: options parsed as text by us (so that every
+// bad value produces the one-line "name = value is invalid: expected …" message),
+// the body options that build a Pair, and output that never prints NaN.
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "bounce/pair/materials_table.hpp"
+#include "bounce/pair/pair.hpp"
+
+namespace bounce::cli {
+
+/// A subcommand: its CLI11 app and what to run when it was chosen.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+/// Numeric options of one subcommand, kept as text until read.
+class NumberOptions {
+ public:
+  explicit NumberOptions(CLI::App* app) : app_(app) {}
+  /// Register "--name" (a real number) with a help text that states the unit.
+  void add(const std::string& name, const std::string& help);
+  bool given(const std::string& name) const;
+  /// The value if given; InvalidArgument(name, text, "a number …") if not a number.
+  std::optional<double> get(const std::string& name) const;
+  /// The value; InvalidArgument(name, "(not given)", what) if missing.
+  double require(const std::string& name, const std::string& what) const;
+  /// The text as given ("" if not given).
+  std::string text(const std::string& name) const;
+
+ private:
+  CLI::App* app_;
+  std::map<std::string, std::string> text_;
+  std::map<std::string, CLI::Option*> options_;
+};
+
+/// --material, --E, --nu, --density, --gamma, --radius and their "2" twins,
+/// --wall, --rigid-wall, --materials-file.
+class BodyOptions {
+ public:
+  explicit BodyOptions(CLI::App* app);
+  /// Build and validate the pair; errors name the CLI options.
+  Pair pair() const;
+  /// The table in use (built-in, or --materials-file).
+  MaterialTable table() const;
+
+ private:
+  Material resolve_material(const MaterialTable& table, bool second,
+                            const std::optional<Material>& fallback) const;
+  CLI::App* app_;
+  NumberOptions numbers_;
+  std::string material_;
+  std::string material2_;
+  std::string materials_file_;
+  bool wall_ = false;
+  bool rigid_wall_ = false;
+};
+
+/// Parse "LO:HI:N" into N values (geometric spacing if log). Errors name `option`.
+std::vector<double> parse_range(const std::string& option, const std::string& text, bool log);
+
+/// Map a library parameter name to the CLI option: "body2.E" -> "--E2",
+/// "contact_radius" -> "--contact-radius"; other names are kept.
+std::string option_name(const std::string& parameter);
+
+/// Pair quantities as JSON (SI units).
+nlohmann::json pair_json(const Pair& pair);
+
+/// Print JSON; NumericalError if any number in it is not finite.
+void print_json(const nlohmann::json& value);
+/// Format one CSV row; NumericalError on a non-finite value.
+std::string csv_row(const std::vector<double>& values);
+
+/// Run the parsed command with the error policy: InvalidArgument -> one line on
+/// stderr and exit code 2; NumericalError -> one line, exit 3.
+int run_guarded(const std::function<int()>& body);
+
+}  // namespace bounce::cli

@@ -1,0 +1,8 @@
+#pragma once
+// One function per subcommand; main() registers them all.
+#include "cli.hpp"
+
+namespace bounce::cli {
+Command add_materials_command(CLI::App& root);
+Command add_contact_command(CLI::App& root);
+}  // namespace bounce::cli

@@ -1,0 +1,95 @@
+#include "bounce/contact/convex.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <boost/math/special_functions/ellint_rd.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+
+namespace bounce::convex {
+
+namespace {
+double curvature(const char* name, double radius) {
+  if (std::isinf(radius) && radius > 0) return 0.0;  // flat direction
+  require_positive(name, radius, "principal radius of curvature [m] (inf for flat)");
+  return 1.0 / radius;
+}
+}  // namespace
+
+QuadraticForm quadratic_form(const Curvatures& c) {  // BP04 (8.7)
+  const double k1 = curvature("radius1", c.radius1);
+  const double k2 = curvature("radius2", c.radius2);
+  const double k1p = curvature("radius1_prime", c.radius1_prime);
+  const double k2p = curvature("radius2_prime", c.radius2_prime);
+  require_finite("angle", c.angle);
+  const double sum = 0.5 * (k1 + k2 + k1p + k2p);            // B1 + B2
+  const double d1 = k1 - k2;
+  const double d2 = k1p - k2p;
+  const double square = d1 * d1 + d2 * d2 + 2.0 * std::cos(2.0 * c.angle) * d1 * d2;
+  const double difference = 0.5 * std::sqrt(std::max(square, 0.0));  // B1 - B2 >= 0
+  QuadraticForm form{0.5 * (sum + difference), 0.5 * (sum - difference)};
+  if (!(form.b2 > 1e-12 * form.b1)) {
+    throw InvalidArgument("curvatures", "B2 = 0",
+                          "a point contact, B2 > 0 (BP04 (8.7)); parallel cylinders or flat "
+                          "directions that add up to a line contact are outside the theory");
+  }
+  return form;
+}
+
+double n_function(double x) {  // BP04 (8.15)
+  return 2.0 * boost::math::ellint_rf(0.0, x, 1.0);
+}
+
+double m_function(double x) {  // BP04 (8.16)
+  return 2.0 / 3.0 * x * boost::math::ellint_rd(0.0, 1.0, x);
+}
+
+double axis_ratio_function(double x) {  // BP04 (8.18), right-hand side
+  return std::sqrt(x) * m_function(1.0 / x) / m_function(x);
+}
+
+double axis_ratio_squared(const QuadraticForm& form) {  // BP04 (8.18)
+  const double target = form.b2 / form.b1;
+  if (target >= 1.0) return 1.0;
+  // r(x) rises monotonically from 0 (x -> 0) to 1 (x = 1); solve in log x.
+  auto residual = [&](double log_x) { return axis_ratio_function(std::exp(log_x)) - target; };
+  double lo = -1.0;
+  while (residual(lo) > 0.0) {
+    lo *= 2.0;
+    if (lo < -700.0) throw NumericalError("BP04 (8.18): axis ratio root not bracketed");
+  }
+  std::uintmax_t iterations = 200;
+  auto tolerance = boost::math::tools::eps_tolerance<double>(52);
+  auto [a, b] = boost::math::tools::toms748_solve(residual, lo, 0.0, residual(lo), 1.0 - target,
+                                                  tolerance, iterations);
+  return std::exp(0.5 * (a + b));
+}
+
+ConvexContact solve(const Curvatures& curvatures, double d) {
+  ConvexContact c;
+  c.form = quadratic_form(curvatures);
+  c.x0 = axis_ratio_squared(c.form);
+  c.n_x0 = n_function(c.x0);
+  c.m_x0 = m_function(c.x0);
+  // BP04 (8.21), corrected: eliminating b between (8.19) and (8.20) gives N^3.
+  c.force_constant = std::numbers::pi / d *
+                     std::sqrt(c.m_x0 / (c.form.b1 * c.x0 * c.n_x0 * c.n_x0 * c.n_x0));
+  return c;
+}
+
+double force(const ConvexContact& contact, double overlap) {  // BP04 (8.21)
+  return overlap > 0.0 ? contact.force_constant * overlap * std::sqrt(overlap) : 0.0;
+}
+
+Ellipse ellipse(const ConvexContact& contact, double d, double overlap) {  // BP04 (8.19)
+  if (overlap <= 0.0) return {};
+  const double b = force(contact, overlap) * d * contact.n_x0 / (std::numbers::pi * overlap);
+  return {std::sqrt(contact.x0) * b, b};
+}
+
+}  // namespace bounce::convex

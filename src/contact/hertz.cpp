@@ -1,0 +1,89 @@
+#include "bounce/contact/hertz.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "bounce/contact/law.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+
+namespace bounce::hertz {
+
+double force(double hertz_constant, double overlap) {  // BP04 (8.24)
+  return overlap > 0.0 ? hertz_constant * overlap * std::sqrt(overlap) : 0.0;
+}
+
+double overlap_from_force(double hertz_constant, double force) {  // BP04 (8.24) inverted
+  return std::cbrt((force / hertz_constant) * (force / hertz_constant));
+}
+
+double contact_radius(double effective_radius, double overlap) {  // BP04 (8.23), K13 (4)
+  return overlap > 0.0 ? std::sqrt(effective_radius * overlap) : 0.0;
+}
+
+double force_from_contact_radius(double effective_modulus, double effective_radius,
+                                 double contact_radius) {  // K13 (5)
+  return 4.0 * effective_modulus * contact_radius * contact_radius * contact_radius /
+         (3.0 * effective_radius);
+}
+
+double elastic_energy(double hertz_constant, double overlap) {  // integral of BP04 (8.24)
+  return overlap > 0.0 ? 0.4 * hertz_constant * overlap * overlap * std::sqrt(overlap) : 0.0;
+}
+
+double max_pressure(double force, double contact_radius) {  // BP04 (8.10) at the centre
+  return 3.0 * force / (2.0 * std::numbers::pi * contact_radius * contact_radius);
+}
+
+}  // namespace bounce::hertz
+
+// --- the "hertz" contact law -----------------------------------------------------
+
+namespace bounce::contact {
+namespace {
+
+class HertzLaw final : public ContactLaw {
+ public:
+  explicit HertzLaw(const Pair& pair)
+      : radius_(pair.effective_radius()),
+        modulus_(pair.effective_modulus()),
+        rho_(pair.hertz_constant()) {}
+
+  std::string_view name() const override { return "hertz"; }
+
+  ContactPoint at_force(double force) const override {
+    if (!std::isfinite(force) || force < 0.0) {
+      throw InvalidArgument("force", format_value(force), "force >= 0 N (hertz has no adhesion)");
+    }
+    const double overlap = hertz::overlap_from_force(rho_, force);
+    return {hertz::contact_radius(radius_, overlap), overlap, force};
+  }
+
+  ContactPoint at_overlap(double overlap) const override {
+    if (!std::isfinite(overlap) || overlap < 0.0) {
+      throw InvalidArgument("overlap", format_value(overlap),
+                            "overlap >= 0 m (hertz spheres touch only for overlap >= 0)");
+    }
+    return {hertz::contact_radius(radius_, overlap), overlap, hertz::force(rho_, overlap)};
+  }
+
+  ContactPoint at_contact_radius(double a) const override {
+    require_non_negative("contact_radius", a, "contact radius [m]");
+    return {a, a * a / radius_, hertz::force_from_contact_radius(modulus_, radius_, a)};
+  }
+
+  std::optional<AdhesionSummary> adhesion() const override { return std::nullopt; }
+
+ private:
+  double radius_;
+  double modulus_;
+  double rho_;
+};
+
+}  // namespace
+
+std::unique_ptr<ContactLaw> make_hertz_law(const Pair& pair) {
+  return std::make_unique<HertzLaw>(pair);
+}
+
+}  // namespace bounce::contact

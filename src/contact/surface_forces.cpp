@@ -1,0 +1,58 @@
+#include "bounce/contact/surface_forces.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace bounce::surface {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+}
+
+double lennard_jones_pressure(double hamaker, double z0, double h) {  // BP04 (8.53)
+  const double ratio3 = (z0 / h) * (z0 / h) * (z0 / h);
+  return hamaker / (6.0 * pi * h * h * h) * (ratio3 * ratio3 - 1.0);
+}
+
+double surface_energy_from_hamaker(double hamaker, double z0) {  // BP04 (8.54)
+  return hamaker / (16.0 * pi * z0 * z0);
+}
+
+double hamaker_from_surface_energy(double gamma, double z0) {  // BP04 (8.54) inverted
+  return 16.0 * pi * z0 * z0 * gamma;
+}
+
+double lennard_jones_max_tension(double gamma, double z0) {  // extremum of BP04 (8.53)
+  return 16.0 * gamma / (9.0 * std::sqrt(3.0) * z0);
+}
+
+double tabor_parameter(double R, double e_star, double gamma, double z0) {  // K13 (11)
+  return std::cbrt(R * gamma * gamma / (e_star * e_star * z0 * z0 * z0));
+}
+
+double tabor_parameter_bp04(double R, double e_star, double gamma, double z0) {  // BP04 (8.55)
+  const double d = 3.0 / (4.0 * e_star);
+  const double mu_three_halves = 2.0 / 3.0 * gamma * d * std::sqrt(R / (z0 * z0 * z0));
+  return std::cbrt(mu_three_halves * mu_three_halves);
+}
+
+double maugis_parameter(double R, double e_star, double gamma, double z0) {
+  const double sigma0 = lennard_jones_max_tension(gamma, z0);
+  const double k = 4.0 * e_star / 3.0;
+  return 2.0 * sigma0 * std::cbrt(R / (pi * gamma * k * k));
+}
+
+std::string regime_k13(double mu) {
+  if (mu > 5.0) return "jkr";
+  if (mu < 0.1) return "dmt";
+  return "transition";
+}
+
+std::string regime_bp04(double mu) {
+  if (mu < 1e-2) return "dmt";
+  if (mu > 10.0) return "jump-into-contact";
+  if (mu >= 1.0) return "jkr";
+  return "transition";
+}
+
+}  // namespace bounce::surface

@@ -1,0 +1,51 @@
+#include "bounce/core/checks.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "bounce/core/error.hpp"
+
+namespace bounce {
+
+std::string format_value(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char buffer[32];
+  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, end);
+}
+
+double require_finite(std::string_view parameter, double value) {
+  if (!std::isfinite(value)) {
+    throw InvalidArgument(std::string(parameter), format_value(value), "a finite number");
+  }
+  return value;
+}
+
+double require_positive(std::string_view parameter, double value, std::string_view what) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw InvalidArgument(std::string(parameter), format_value(value),
+                          fmt::format("{} > 0 and finite", what));
+  }
+  return value;
+}
+
+double require_non_negative(std::string_view parameter, double value, std::string_view what) {
+  if (!std::isfinite(value) || value < 0.0) {
+    throw InvalidArgument(std::string(parameter), format_value(value),
+                          fmt::format("{} >= 0 and finite", what));
+  }
+  return value;
+}
+
+double require_open_interval(std::string_view parameter, double value, double lo, double hi,
+                             std::string_view what) {
+  if (!std::isfinite(value) || value <= lo || value >= hi) {
+    throw InvalidArgument(std::string(parameter), format_value(value),
+                          fmt::format("{} < {} < {}", format_value(lo), what, format_value(hi)));
+  }
+  return value;
+}
+
+}  // namespace bounce

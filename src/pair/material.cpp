@@ -1,0 +1,21 @@
+#include "bounce/pair/material.hpp"
+
+#include "bounce/core/checks.hpp"
+
+namespace bounce {
+
+void validate(const Material& m, const FieldNamer& name_of) {
+  require_positive(name_of("E"), m.youngs_modulus, "Young's modulus E [Pa]");
+  require_open_interval(name_of("nu"), m.poisson_ratio, -1.0, 0.5, "Poisson ratio nu");
+  require_positive(name_of("density"), m.density, "density [kg/m^3]");
+  if (m.surface_energy) {
+    require_non_negative(name_of("gamma"), *m.surface_energy, "surface energy gamma [J/m^2]");
+  }
+}
+
+void validate(const Material& m) {
+  const std::string prefix = m.name.empty() ? std::string("material.") : m.name + ".";
+  validate(m, [&](std::string_view field) { return prefix + std::string(field); });
+}
+
+}  // namespace bounce
