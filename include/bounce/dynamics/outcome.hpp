@@ -1,0 +1,66 @@
+#pragma once
+// What a collision produces: restitution, outcome, times, energy budget and,
+// on request, the trajectory. SI units.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bounce::dynamics {
+
+/// When does the contact end (SPEC §3)?
+enum class EndRule {
+  overlap,  ///< when the overlap returns to zero (BP04's series describe this)
+  force,    ///< when the total normal force first vanishes (no attraction between non-adhesive grains)
+};
+std::string_view to_string(EndRule rule);
+/// "overlap" | "force"; InvalidArgument("contact_end", …) otherwise.
+EndRule parse_end_rule(std::string_view text);
+
+enum class Outcome { bounce, stick };
+std::string_view to_string(Outcome outcome);
+
+/// Where the initial kinetic energy went [J]. initial_kinetic = final_kinetic +
+/// bulk_dissipated + crack_dissipated + plastic_dissipated + elastic_remaining +
+/// surface_remaining up to the integration error (closure_error).
+struct EnergyBudget {
+  double initial_kinetic = 0.0;     ///< (1/2) m_eff g^2
+  double final_kinetic = 0.0;       ///< (1/2) m_eff (e g)^2 after separation
+  double bulk_dissipated = 0.0;     ///< work of the bulk viscous force, K13 (C.3)
+  double crack_dissipated = 0.0;    ///< work at the crack tip, K13 (C.2)
+  double plastic_dissipated = 0.0;  ///< plastic loss (added when --yield is given)
+  double elastic_remaining = 0.0;   ///< elastic energy still stored when the contact ends
+  double surface_remaining = 0.0;   ///< surface energy -pi a^2 gamma when the contact ends
+  double closure_error = 0.0;       ///< initial minus the sum of the others
+};
+
+/// One sample of the trajectory (SI).
+struct TrajectorySample {
+  double time = 0.0;               ///< [s]
+  double overlap = 0.0;            ///< xi (delta) [m]
+  double rate = 0.0;               ///< d xi/dt [m/s]
+  double contact_radius = 0.0;     ///< a [m] (Hertz a = sqrt(R xi) for non-adhesive models)
+  double elastic_force = 0.0;      ///< conservative part [N]
+  double dissipative_force = 0.0;  ///< rate-dependent part [N]
+  double effective_surface_energy_ratio = 0.0;  ///< beta = G_eff/gamma (adhesive models)
+  double kinetic = 0.0;            ///< U_K [J]
+  double elastic = 0.0;            ///< U_E [J]
+  double surface = 0.0;            ///< U_S [J]
+  double bulk_dissipated = 0.0;    ///< U_BD so far [J]
+  double crack_dissipated = 0.0;   ///< U_CD so far [J]
+};
+
+struct CollisionOutcome {
+  double cor = 0.0;                  ///< coefficient of normal restitution (0 when sticking)
+  Outcome outcome = Outcome::bounce;
+  double contact_time = 0.0;         ///< [s]; for sticking: time at which sticking was certain
+  double max_overlap = 0.0;          ///< [m]
+  double time_of_max_overlap = 0.0;  ///< [s]
+  EnergyBudget energy;
+  std::vector<TrajectorySample> trajectory;  ///< empty unless requested
+  std::vector<std::string> warnings;         ///< validity conditions that do not hold
+  std::string method;                        ///< "integrate", "master" or "closed-form"
+  long steps = 0;                            ///< integration steps taken (0 for master)
+};
+
+}  // namespace bounce::dynamics
