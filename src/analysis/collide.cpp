@@ -1,0 +1,165 @@
+#include "bounce/analysis/collide.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "bounce/analytic/master_curve.hpp"
+#include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+#include "bounce/dynamics/normal_collision.hpp"
+
+namespace bounce {
+
+namespace {
+
+// BSHP96 (B3): transversal speed of sound c_t = sqrt(E / (2 rho (1 + nu))).
+double transversal_sound_speed(const Material& m) {
+  return std::sqrt(m.youngs_modulus / (2.0 * m.density * (1.0 + m.poisson_ratio)));
+}
+
+// Quasi-static validity (BSHP96 (B11)-(B12), BP04 (8.26)) and small strain.
+void add_validity_warnings(dynamics::CollisionOutcome& out, const Pair& pair, double velocity,
+                           double viscous_time) {
+  double c_t = transversal_sound_speed(pair.body1().material);
+  if (!pair.body2().rigid) c_t = std::min(c_t, transversal_sound_speed(pair.body2().material));
+  if (velocity > 0.1 * c_t) {
+    out.warnings.push_back(fmt::format(
+        "impact velocity {:.3g} m/s is not << the transversal sound speed {:.3g} m/s: the "
+        "quasi-static approximation (BSHP96 (B11)) does not hold",
+        velocity, c_t));
+  }
+  if (viscous_time > 0.1 * out.contact_time && out.contact_time > 0.0) {
+    out.warnings.push_back(fmt::format(
+        "viscous time scale {:.3g} s is not << the contact time {:.3g} s (BSHP96 (B12), BP04 (8.26))",
+        viscous_time, out.contact_time));
+  }
+  const double strain = std::sqrt(out.max_overlap / pair.effective_radius());
+  if (strain > 0.1) {
+    out.warnings.push_back(fmt::format(
+        "contact radius / R_eff = {:.3g} is not small: Hertz theory assumes small strains", strain));
+  }
+}
+
+bool has_master_curve(const models::ModelSpec& spec) {
+  return models::model_info(spec.name).has_master_curve;
+}
+
+dynamics::CollisionOutcome from_master(const models::ModelSpec& spec, const Pair& pair, double velocity) {
+  const ViscoelasticScales s = viscoelastic_scales(pair, spec, velocity);
+  const analytic::MasterValues v = analytic::viscoelastic_master(s.kappa, spec.end_rule);
+  dynamics::CollisionOutcome out;
+  out.method = "master";
+  out.cor = v.cor;
+  out.outcome = dynamics::Outcome::bounce;
+  out.contact_time = v.contact_time * s.reference_overlap / velocity;
+  out.max_overlap = v.max_overlap * s.reference_overlap;
+  const double m = pair.effective_mass();
+  dynamics::EnergyBudget& e = out.energy;
+  e.initial_kinetic = 0.5 * m * velocity * velocity;
+  e.final_kinetic = e.initial_kinetic * v.cor * v.cor;
+  if (spec.end_rule == dynamics::EndRule::force) {
+    // At F = 0: xi' = -(2/3) xi / A, so the overlap left is xi = (3/2) A e g.
+    const double xi_end = 1.5 * s.dissipative_constant * v.cor * velocity;
+    e.elastic_remaining = 0.4 * s.force_constant * xi_end * xi_end * std::sqrt(xi_end);
+  }
+  e.bulk_dissipated = e.initial_kinetic - e.final_kinetic - e.elastic_remaining;
+  return out;
+}
+
+double viscous_time_scale(const models::ModelSpec& spec, const Pair& pair) {
+  if (spec.name == "power-law") return 0.0;
+  const double a = models::dissipative_constant(spec, pair);
+  if (spec.shear_viscosity || spec.bulk_viscosity) {
+    // BSHP96 (B13): tau_i = eta_i / E_i with E1 = E/(1+nu), E2 = E/(3(1-2nu)).
+    const Material& m = pair.body1().material;
+    const double e1 = m.youngs_modulus / (1.0 + m.poisson_ratio);
+    const double e2 = m.youngs_modulus / (3.0 * (1.0 - 2.0 * m.poisson_ratio));
+    return std::max(spec.shear_viscosity.value_or(0.0) / e1, spec.bulk_viscosity.value_or(0.0) / e2);
+  }
+  return a;  // for eta2/E2 = eta1/E1 = tau, (8.38) gives exactly A = tau
+}
+
+}  // namespace
+
+Method parse_method(const std::string& text) {
+  if (text == "integrate") return Method::integrate;
+  if (text == "master") return Method::master;
+  if (text == "auto") return Method::automatic;
+  throw InvalidArgument("method", text, "integrate, master or auto");
+}
+
+ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::ModelSpec& spec, double velocity) {
+  require_positive("velocity", velocity, "impact velocity [m/s]");
+  ViscoelasticScales s;
+  const models::HertzGeometry g = models::hertz_geometry(spec, pair);
+  s.dissipative_constant = models::dissipative_constant(spec, pair);
+  s.force_constant = g.force_constant;
+  const double m = pair.effective_mass();
+  s.kappa = analytic::kappa(s.dissipative_constant, g.force_constant, m, velocity);
+  s.q = analytic::expansion_variable(s.kappa);
+  s.characteristic_velocity = s.dissipative_constant > 0.0
+                                  ? analytic::characteristic_velocity(s.dissipative_constant, g.force_constant, m)
+                                  : std::numeric_limits<double>::infinity();
+  s.reference_overlap = std::pow(1.25 * m * velocity * velocity / g.force_constant, 0.4);  // (8.65)
+  s.hertz_contact_time = analytic::hertz_contact_time(g.force_constant, m, velocity);
+  return s;
+}
+
+dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& spec, double velocity,
+                                   const CollideOptions& options) {
+  require_positive("velocity", velocity, "impact velocity [m/s]");
+  const auto force = models::make_normal_force(spec, pair);  // validates the model
+  bool use_master = false;
+  switch (options.method) {
+    case Method::automatic:
+      use_master = has_master_curve(spec) && !options.record_trajectory;
+      break;
+    case Method::master:
+      if (!has_master_curve(spec)) {
+        throw InvalidArgument("method", "master",
+                              fmt::format("integrate for model {} (it has no master curve)", spec.name));
+      }
+      if (options.record_trajectory) {
+        throw InvalidArgument("method", "master", "integrate when a trajectory is requested");
+      }
+      use_master = true;
+      break;
+    case Method::integrate:
+      break;
+  }
+  dynamics::CollisionOutcome out;
+  if (use_master) {
+    out = from_master(spec, pair, velocity);
+  } else {
+    dynamics::NormalCollisionOptions o;
+    o.end_rule = spec.end_rule;
+    o.integration = options.integration;
+    o.record_trajectory = options.record_trajectory;
+    o.trajectory_points = options.trajectory_points;
+    out = dynamics::integrate_normal_collision(*force, pair.effective_mass(), velocity, o);
+  }
+  add_validity_warnings(out, pair, velocity, viscous_time_scale(spec, pair));
+  return out;
+}
+
+double cor(const Pair& pair, const models::ModelSpec& model, double velocity, const CollideOptions& options) {
+  return collide(pair, model, velocity, options).cor;
+}
+
+std::vector<dynamics::CollisionOutcome> collide_curve(const Pair& pair, const models::ModelSpec& model,
+                                                      const std::vector<double>& velocities,
+                                                      const CollideOptions& options,
+                                                      const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<dynamics::CollisionOutcome> out;
+  out.reserve(velocities.size());
+  for (std::size_t i = 0; i < velocities.size(); ++i) {
+    out.push_back(collide(pair, model, velocities[i], options));
+    if (progress) progress(i + 1, velocities.size());
+  }
+  return out;
+}
+
+}  // namespace bounce
