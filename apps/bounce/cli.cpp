@@ -1,6 +1,8 @@
 #include "cli.hpp"
 
+#include <unistd.h>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <regex>
@@ -156,13 +158,14 @@ std::vector<double> parse_range(const std::string& option, const std::string& te
     values[static_cast<std::size_t>(i)] =
         log ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo))) : lo + f * (hi - lo);
   }
+  values.front() = lo;
   values.back() = hi;
   return values;
 }
 
 std::string option_name(const std::string& parameter) {
   static const std::regex body(R"(^body([12])\.(\w+)$)");
-  static const std::regex plain(R"(^[a-z][a-z0-9_]*$)");
+  static const std::regex plain(R"(^[A-Za-z][A-Za-z0-9_]*$)");
   std::smatch match;
   if (std::regex_match(parameter, match, body)) {
     return "--" + match[2].str() + (match[1] == "2" ? "2" : "");
@@ -253,6 +256,127 @@ int run_guarded(const std::function<int()>& body) {
     std::cerr << "bounce: internal error: " << e.what() << '\n';
     return 4;
   }
+}
+
+}  // namespace bounce::cli
+
+// --- model options, outcomes, progress -------------------------------------------
+
+namespace bounce::cli {
+
+std::array<double, 2> parse_radii(const std::string& option, const std::string& text) {
+  const auto comma = text.find(',');
+  const std::string allowed = "two principal radii R1,R2 in m (inf for a flat direction)";
+  if (comma == std::string::npos) throw InvalidArgument(option, text, allowed);
+  auto number = [&](const std::string& s) {
+    double v = 0.0;
+    const bool inf = s == "inf";
+    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (!inf && (ec != std::errc() || ptr != s.data() + s.size())) throw InvalidArgument(option, text, allowed);
+    return inf ? std::numeric_limits<double>::infinity() : v;
+  };
+  return {number(text.substr(0, comma)), number(text.substr(comma + 1))};
+}
+
+namespace {
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+ModelOptions::ModelOptions(CLI::App* app, NumberOptions& numbers) : numbers_(numbers) {
+  app->add_option("--model", model_,
+                  "hertz | viscoelastic | viscoelastic-shifted | power-law (default viscoelastic)");
+  numbers_.add("--A", "dissipative constant A [s] (BP04 (8.38), BSHP96 (23))");
+  numbers_.add("--eta1", "shear viscosity eta1 [Pa s] (A from BP04 (8.38))");
+  numbers_.add("--eta2", "bulk viscosity eta2 [Pa s] (A from BP04 (8.38))");
+  app->add_option("--contact-end", contact_end_, "overlap | force: when the contact ends (default overlap)");
+  app->add_option("--method", method_, "integrate | master | auto (default: master where valid)");
+  app->add_option("--tolerance", tolerance_, "relative and absolute tolerance of direct integration (default 1e-12)");
+  app->add_option("--curvature-radii", curvature1_, "principal radii R1,R2 of body 1 [m] (convex bodies)");
+  app->add_option("--curvature-radii2", curvature2_, "principal radii R1',R2' of body 2 [m]");
+  numbers_.add("--angle", "angle phi between the planes of R1 and R1' [rad] (convex bodies)");
+  numbers_.add("--power-d1", "power-law D1 [m^{1-alpha}/s^2]");
+  numbers_.add("--power-alpha", "power-law elastic exponent alpha (default 1.5)");
+  numbers_.add("--power-d2", "power-law D2 [m^{1-gamma-beta} s^{beta-2}]");
+  numbers_.add("--power-beta", "power-law rate exponent beta (default 1)");
+  numbers_.add("--power-gamma", "power-law overlap exponent gamma of the dissipative term (default 0.5)");
+}
+
+models::ModelSpec ModelOptions::spec() const {
+  models::ModelSpec s;
+  s.name = model_;
+  (void)models::model_info(s.name);  // unknown model -> InvalidArgument("model", …)
+  s.dissipative_constant = numbers_.get("--A");
+  s.shear_viscosity = numbers_.get("--eta1");
+  s.bulk_viscosity = numbers_.get("--eta2");
+  s.end_rule = dynamics::parse_end_rule(contact_end_);
+  if (!curvature1_.empty() || !curvature2_.empty() || numbers_.given("--angle")) {
+    if (curvature1_.empty()) throw InvalidArgument("--curvature-radii", "(not given)", "R1,R2 of body 1 in m");
+    const auto r1 = parse_radii("--curvature-radii", curvature1_);
+    const auto r2 = curvature2_.empty() ? r1 : parse_radii("--curvature-radii2", curvature2_);
+    s.curvatures = convex::Curvatures{r1[0], r1[1], r2[0], r2[1], numbers_.get("--angle").value_or(0.0)};
+  }
+  if (s.name == "power-law") {
+    models::PowerLawParameters p;
+    p.d1 = numbers_.require("--power-d1", "D1 > 0 for the power-law model");
+    p.d2 = numbers_.require("--power-d2", "D2 >= 0 for the power-law model");
+    p.alpha = numbers_.get("--power-alpha").value_or(1.5);
+    p.beta = numbers_.get("--power-beta").value_or(1.0);
+    p.gamma = numbers_.get("--power-gamma").value_or(0.5);
+    s.power_law = p;
+  }
+  return s;
+}
+
+CollideOptions ModelOptions::collide_options() const {
+  CollideOptions o;
+  o.method = parse_method(method_);
+  require_open_interval("tolerance", tolerance_, 1e-15, 1e-3, "tolerance");
+  o.integration.relative_tolerance = tolerance_;
+  o.integration.absolute_tolerance = tolerance_;
+  return o;
+}
+
+nlohmann::json outcome_json(const dynamics::CollisionOutcome& o, bool with_trajectory) {
+  nlohmann::json j;
+  j["cor"] = o.cor;
+  j["outcome"] = std::string(dynamics::to_string(o.outcome));
+  j["contact_time"] = o.contact_time;
+  j["max_overlap"] = o.max_overlap;
+  j["time_of_max_overlap"] = o.time_of_max_overlap;
+  j["method"] = o.method;
+  j["steps"] = o.steps;
+  const auto& e = o.energy;
+  j["energy"] = {{"initial_kinetic", e.initial_kinetic},     {"final_kinetic", e.final_kinetic},
+                 {"bulk_dissipated", e.bulk_dissipated},     {"crack_dissipated", e.crack_dissipated},
+                 {"plastic_dissipated", e.plastic_dissipated}, {"elastic_remaining", e.elastic_remaining},
+                 {"surface_remaining", e.surface_remaining}, {"closure_error", e.closure_error}};
+  j["warnings"] = o.warnings;
+  if (with_trajectory) {
+    nlohmann::json t = nlohmann::json::array();
+    for (const auto& s : o.trajectory) {
+      t.push_back({{"time", s.time}, {"overlap", s.overlap}, {"rate", s.rate},
+                   {"contact_radius", s.contact_radius}, {"elastic_force", s.elastic_force},
+                   {"dissipative_force", s.dissipative_force}, {"beta", s.effective_surface_energy_ratio},
+                   {"kinetic", s.kinetic}, {"elastic", s.elastic}, {"surface", s.surface},
+                   {"bulk_dissipated", s.bulk_dissipated}, {"crack_dissipated", s.crack_dissipated}});
+    }
+    j["trajectory"] = t;
+  }
+  return j;
+}
+
+Progress::Progress(std::string what, bool forced)
+    : what_(std::move(what)), enabled_(forced || ::isatty(STDERR_FILENO)), start_(now_seconds()) {}
+
+void Progress::operator()(std::size_t done, std::size_t total) {
+  if (!enabled_) return;
+  const double t = now_seconds() - start_;
+  if (done < total && t - last_ < 1.0) return;  // at most once a second
+  last_ = t;
+  std::cerr << fmt::format("{}: {}/{} ({:.0f}%) {:.1f} s\n", what_, done, total,
+                           100.0 * static_cast<double>(done) / static_cast<double>(total), t);
 }
 
 }  // namespace bounce::cli

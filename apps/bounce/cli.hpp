@@ -12,6 +12,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bounce/analysis/collide.hpp"
+#include "bounce/dynamics/outcome.hpp"
+#include "bounce/models/registry.hpp"
 #include "bounce/pair/materials_table.hpp"
 #include "bounce/pair/pair.hpp"
 
@@ -64,6 +67,43 @@ class BodyOptions {
   bool wall_ = false;
   bool rigid_wall_ = false;
 };
+
+/// --model, --A, --eta1, --eta2, --contact-end, --method, convex-body and
+/// power-law options: everything that selects a collision model.
+class ModelOptions {
+ public:
+  ModelOptions(CLI::App* app, NumberOptions& numbers);
+  models::ModelSpec spec() const;
+  CollideOptions collide_options() const;
+  const std::string& method_text() const { return method_; }
+
+ private:
+  NumberOptions& numbers_;
+  std::string model_ = "viscoelastic";
+  std::string contact_end_ = "overlap";
+  std::string method_ = "auto";
+  std::string curvature1_, curvature2_;
+  double tolerance_ = 1e-12;
+};
+
+/// The JSON object of a collision outcome (SPEC §7 fields plus the energy budget).
+nlohmann::json outcome_json(const dynamics::CollisionOutcome& outcome, bool with_trajectory);
+
+/// Progress on stderr for long runs: shown when stderr is a terminal or `forced`.
+class Progress {
+ public:
+  Progress(std::string what, bool forced);
+  void operator()(std::size_t done, std::size_t total);
+
+ private:
+  std::string what_;
+  bool enabled_;
+  double start_;
+  double last_ = -1.0;
+};
+
+/// "R1,R2" -> two principal radii of curvature [m] ("inf" for a flat direction).
+std::array<double, 2> parse_radii(const std::string& option, const std::string& text);
 
 /// Parse "LO:HI:N" into N values (geometric spacing if log). Errors name `option`.
 std::vector<double> parse_range(const std::string& option, const std::string& text, bool log);

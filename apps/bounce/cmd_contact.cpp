@@ -29,24 +29,6 @@ struct ContactOptions {
   std::string curvature1, curvature2;
 };
 
-// "R1,R2" -> two radii ("inf" allowed).
-std::array<double, 2> parse_pair_of_radii(const std::string& option, const std::string& text) {
-  const auto comma = text.find(',');
-  const std::string allowed = "two principal radii R1,R2 in m (inf for a flat direction)";
-  if (comma == std::string::npos) throw InvalidArgument(option, text, allowed);
-  auto number = [&](const std::string& s) {
-    try {
-      std::size_t used = 0;
-      const double v = std::stod(s, &used);
-      if (used != s.size()) throw InvalidArgument(option, text, allowed);
-      return v;
-    } catch (const std::logic_error&) {
-      throw InvalidArgument(option, text, allowed);
-    }
-  };
-  return {number(text.substr(0, comma)), number(text.substr(comma + 1))};
-}
-
 nlohmann::json point_json(const contact::ContactPoint& p) {
   return {{"contact_radius", p.contact_radius}, {"overlap", p.overlap}, {"force", p.force}};
 }
@@ -143,11 +125,11 @@ int run_contact(const ContactOptions& o) {
     if (o.curvature1.empty()) {
       throw InvalidArgument("--curvature-radii", "(not given)", "R1,R2 of body 1 in m");
     }
-    const auto r1 = parse_pair_of_radii("--curvature-radii", o.curvature1);
+    const auto r1 = parse_radii("--curvature-radii", o.curvature1);
     const double inf = std::numeric_limits<double>::infinity();
     const auto r2 = o.curvature2.empty()
                         ? (pair.body2().is_wall() ? std::array<double, 2>{inf, inf} : r1)
-                        : parse_pair_of_radii("--curvature-radii2", o.curvature2);
+                        : parse_radii("--curvature-radii2", o.curvature2);
     body_shape = convex::solve({r1[0], r1[1], r2[0], r2[1], o.numbers.get("--angle").value_or(0.0)},
                                pair.hertz_compliance_d());
   }

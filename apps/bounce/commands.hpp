@@ -5,4 +5,7 @@
 namespace bounce::cli {
 Command add_materials_command(CLI::App& root);
 Command add_contact_command(CLI::App& root);
+Command add_collide_command(CLI::App& root);
+Command add_curve_command(CLI::App& root);
+Command add_analytic_command(CLI::App& root);
 }  // namespace bounce::cli

@@ -11,7 +11,9 @@ int main(int argc, char** argv) {
   CLI::App app{"bounce: will two adhesive, viscoelastic spheres bounce or stick?", "bounce"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "bounce 0.1.0");
-  std::vector<Command> commands = {add_materials_command(app), add_contact_command(app)};
+  std::vector<Command> commands = {add_materials_command(app), add_contact_command(app),
+                                  add_collide_command(app),   add_curve_command(app),
+                                  add_analytic_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
