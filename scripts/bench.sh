@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# Run every benchmark (C++ and the Python/scipy references where present).
+# Run every benchmark: the C++ ones, then the side-by-side comparisons with Python references.
 set -euo pipefail
 build_dir="${1:-build}"
 cd "$(dirname "$0")/.."
 for b in "$build_dir"/bin/bench_*; do
+  case "$(basename "$b")" in bench_viscoelastic_exact) continue ;; esac
   echo "== $(basename "$b")"
   "$b" --benchmark_min_time=0.2
 done
+echo "== viscoelastic collision against scipy"
+/usr/bin/python3 bench/viscoelastic_vs_scipy.py "$build_dir"
