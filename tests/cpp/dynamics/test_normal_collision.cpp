@@ -130,3 +130,46 @@ TEST(NormalCollision, TrajectoryIsRecordedAndConsistent) {
     EXPECT_NEAR((s.kinetic + s.elastic + s.bulk_dissipated) / out.energy.initial_kinetic, 1.0, 1e-9);
   }
 }
+
+// BSHP96 (25): (xi + A xi')^{3/2} = xi^{3/2} + (3/2) A sqrt(xi) xi' + O(A^2), so the
+// shifted model agrees with (24) to first order in A: (1 - e_shifted)/(1 - e) -> 1 as
+// A -> 0 (the relative difference is O(kappa), checked at 0.7 kappa). Once its force
+// vanishes it stays zero, so both end rules give the same e.
+TEST(NormalCollision, ShiftedModelAgreesToFirstOrder) {
+  const Pair& p = ice_pair();
+  for (double a : {1e-9, 1e-8}) {
+    models::ModelSpec shifted, plain;
+    shifted.name = "viscoelastic-shifted";
+    shifted.dissipative_constant = plain.dissipative_constant = a;
+    CollideOptions o;
+    o.method = Method::integrate;
+    const double e_shifted = cor(p, shifted, 1.0, o);
+    const double e_plain = cor(p, plain, 1.0, o);
+    const double k = analytic::kappa(a, p.hertz_constant(), p.effective_mass(), 1.0);
+    EXPECT_NEAR((1.0 - e_shifted) / (1.0 - e_plain), 1.0, 0.7 * k) << a;
+    shifted.end_rule = EndRule::force;
+    EXPECT_NEAR(cor(p, shifted, 1.0, o), e_shifted, 1e-10);
+  }
+}
+
+// General convex bodies (BP04 (8.37)): spheres given by their curvatures collide exactly
+// like spheres; an elongated contact has a larger C0, hence a larger kappa and smaller e.
+TEST(NormalCollision, ConvexBodiesThroughC0) {
+  const Pair& p = ice_pair();
+  models::ModelSpec sphere_spec, convex_spec, elongated;
+  sphere_spec.dissipative_constant = convex_spec.dissipative_constant = elongated.dissipative_constant = 1e-6;
+  convex_spec.curvatures = convex::Curvatures{1e-2, 1e-2, 1e-2, 1e-2, 0.0};
+  elongated.curvatures = convex::Curvatures{1e-2, 5e-2, 1e-2, 5e-2, 0.0};
+  for (Method m : {Method::master, Method::integrate}) {
+    CollideOptions o;
+    o.method = m;
+    EXPECT_NEAR(cor(p, convex_spec, 0.7, o), cor(p, sphere_spec, 0.7, o), 1e-12);
+    const auto geometry = models::hertz_geometry(elongated, p);
+    EXPECT_GT(geometry.force_constant, p.hertz_constant());
+    EXPECT_LT(cor(p, elongated, 0.7, o), cor(p, sphere_spec, 0.7, o));
+  }
+  // The master curve applies to convex bodies too: both methods agree.
+  CollideOptions integrate;
+  integrate.method = Method::integrate;
+  EXPECT_NEAR(cor(p, elongated, 0.7), cor(p, elongated, 0.7, integrate), 1e-9);
+}
