@@ -105,7 +105,41 @@ class PowerLawForce final : public NormalForceModel {
   double radius_;
 };
 
+class AdhesiveViscoelasticForce final : public NormalForceModel {
+ public:
+  explicit AdhesiveViscoelasticForce(const AdhesiveViscoelasticParameters& p) : p_(p) {}
+  std::string_view name() const override { return "adhesive-viscoelastic"; }
+  double force(double xi, double rate) const override {  // BP04 (8.56) + (8.57)
+    if (xi <= 0.0) return 0.0;
+    const double q = std::sqrt(std::sqrt(xi));  // xi^{1/4}
+    return p_.rho * xi * q * q + p_.rho * 1.5 * p_.a * q * q * rate - p_.adhesion * xi / q +
+           0.75 * p_.b * p_.adhesion * rate / q;
+  }
+  double force_sign(double xi, double rate) const override { return force(xi, rate); }
+  double elastic_force(double xi) const override {  // (8.56)
+    if (xi <= 0.0) return 0.0;
+    return p_.rho * xi * std::sqrt(xi) - p_.adhesion * std::pow(xi, 0.75);
+  }
+  double elastic_energy(double xi) const override {  // integral of (8.56)
+    if (xi <= 0.0) return 0.0;
+    return 0.4 * p_.rho * xi * xi * std::sqrt(xi) - 4.0 / 7.0 * p_.adhesion * std::pow(xi, 1.75);
+  }
+  double contact_radius(double xi) const override { return hertz::contact_radius(p_.effective_radius, xi); }
+  double reference_overlap(double speed) const override {
+    return power_law_reference_overlap(p_.rho / p_.effective_mass, 1.5, speed);
+  }
+  bool adhesive() const override { return true; }
+  double cutoff_overlap(double speed) const override { return p_.cutoff_fraction * reference_overlap(speed); }
+
+ private:
+  AdhesiveViscoelasticParameters p_;
+};
+
 }  // namespace
+
+std::unique_ptr<NormalForceModel> make_adhesive_viscoelastic_force(const AdhesiveViscoelasticParameters& p) {
+  return std::make_unique<AdhesiveViscoelasticForce>(p);
+}
 
 std::unique_ptr<NormalForceModel> make_viscoelastic_force(const HertzGeometry& geometry,
                                                           double dissipative_constant,

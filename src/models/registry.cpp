@@ -12,12 +12,18 @@ namespace bounce::models {
 
 const std::vector<ModelInfo>& collision_models() {
   static const std::vector<ModelInfo> table = {
-      {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)", true},
+      {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)", true, false, false},
       {"viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'",
-       "BP04 (8.42), BSHP96 (24)", true},
+       "BP04 (8.42), BSHP96 (24)", true, false, false},
       {"viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero",
-       "BSHP96 (25)", false},
-      {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", false},
+       "BSHP96 (25)", false, false, false},
+      {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", false, false, false},
+      {"adhesive-viscoelastic", "BP04's quasi-static adhesive force (8.56) with its dissipation (8.57)",
+       "BP04 (8.56)-(8.58), SPEC §4.1", false, true, false},
+      {"jkr-viscoelastic", "contact radius on the JKR equilibrium (instantaneous crack) plus the bulk force",
+       "K13 (8), (9), (19), (20)", false, true, true},
+      {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
+       "K13 (2), (14)-(21), appendices B, C", false, true, true},
   };
   return table;
 }
@@ -37,6 +43,22 @@ double dissipative_constant_from_viscosities(double eta1, double eta2, double e,
          (1.0 - 2.0 * nu) / (e * nu * nu);
 }
 
+double dissipative_constant_b(const ModelSpec& spec, const Pair& pair, double a) {
+  if (spec.dissipative_constant_b) {
+    return require_non_negative("B", *spec.dissipative_constant_b, "dissipative constant B [s] of BP04 (8.57)");
+  }
+  if (spec.shear_viscosity && spec.bulk_viscosity) {
+    // SPEC §4.1: B = alpha beta = (3 eta2 - eta1)(1 + nu)(1 - 2 nu) / (3 E nu) (BP04 (8.58) corrected).
+    const Material& m = pair.body1().material;
+    const double nu = m.poisson_ratio;
+    return (3.0 * *spec.bulk_viscosity - *spec.shear_viscosity) * (1.0 + nu) * (1.0 - 2.0 * nu) /
+           (3.0 * m.youngs_modulus * nu);
+  }
+  // With equal relaxation times of shear and dilatation (eta_i = E_i tau) both A and
+  // B equal tau (docs/adhesive.md), so B = A is the one-parameter choice.
+  return a;
+}
+
 double dissipative_constant(const ModelSpec& spec, const Pair& pair) {
   if (spec.name == "hertz") {
     if (spec.dissipative_constant && *spec.dissipative_constant != 0.0) {
@@ -45,6 +67,10 @@ double dissipative_constant(const ModelSpec& spec, const Pair& pair) {
     return 0.0;
   }
   const bool viscosities = spec.shear_viscosity || spec.bulk_viscosity;
+  if (!spec.dissipative_constant && !viscosities && spec.relaxation_time) {
+    return krijt_dissipative_constant(
+        require_positive("tvis", *spec.relaxation_time, "viscous relaxation time T_vis [s]"), pair);
+  }
   if (spec.dissipative_constant && viscosities) {
     throw InvalidArgument("A", format_value(*spec.dissipative_constant),
                           "either A or the viscosities eta1, eta2, not both");
@@ -54,7 +80,7 @@ double dissipative_constant(const ModelSpec& spec, const Pair& pair) {
   }
   if (!viscosities) {
     throw InvalidArgument("A", "(not given)",
-                          fmt::format("a dissipative constant A >= 0 s, or eta1 and eta2 (model {})",
+                          fmt::format("a dissipative constant A >= 0 s, eta1 and eta2, or T_vis (model {})",
                                       spec.name));
   }
   if (!spec.shear_viscosity) throw InvalidArgument("eta1", "(not given)", "a shear viscosity >= 0 Pa s");
@@ -89,8 +115,48 @@ HertzGeometry hertz_geometry(const ModelSpec& spec, const Pair& pair) {
   return g;
 }
 
+KrijtParameters krijt_parameters(const ModelSpec& spec, const Pair& pair) {
+  KrijtParameters p;
+  p.effective_radius = pair.effective_radius();
+  p.effective_modulus = pair.effective_modulus();
+  p.effective_mass = pair.effective_mass();
+  p.surface_energy = pair.require_surface_energy("model " + spec.name);
+  require_positive("gamma", p.surface_energy, fmt::format("surface energy gamma [J/m^2] (model {} needs gamma > 0)", spec.name));
+  if (spec.relaxation_time) {
+    p.relaxation_time = require_positive("tvis", *spec.relaxation_time, "viscous relaxation time T_vis [s]");
+  } else if (spec.name == "krijt" || !spec.dissipative_constant) {
+    throw InvalidArgument("tvis", "(not given)",
+                          fmt::format("a viscous relaxation time T_vis > 0 s (model {})", spec.name));
+  }
+  if (spec.dissipative_constant) {
+    p.dissipative_constant = require_non_negative("A", *spec.dissipative_constant, "dissipative constant A [s]");
+  } else {
+    p.dissipative_constant = krijt_dissipative_constant(p.relaxation_time, pair);  // K13 after (18)
+  }
+  p.z0 = require_positive("z0", spec.z0, "equilibrium separation z0 [m]");
+  p.k = require_open_interval("k", spec.k, 0.0, 1.0, "k (relaxed / instantaneous modulus)");
+  return p;
+}
+
 std::unique_ptr<NormalForceModel> make_normal_force(const ModelSpec& spec, const Pair& pair) {
   const ModelInfo& info = model_info(spec.name);
+  if (info.dynamic_contact) {
+    throw InvalidArgument("model", spec.name, "a force-law model (krijt and jkr-viscoelastic integrate a(t))");
+  }
+  if (spec.name == "adhesive-viscoelastic") {
+    const double gamma = pair.require_surface_energy("model adhesive-viscoelastic");
+    require_positive("gamma", gamma, "surface energy gamma [J/m^2] (adhesive model needs gamma > 0)");
+    AdhesiveViscoelasticParameters a;
+    a.rho = pair.hertz_constant();
+    // BP04 (8.56): C = sqrt(6 pi gamma / D) R_eff^{3/4}
+    a.adhesion = std::sqrt(6.0 * std::numbers::pi * gamma / pair.hertz_compliance_d()) *
+                 std::pow(pair.effective_radius(), 0.75);
+    a.a = dissipative_constant(spec, pair);
+    a.b = dissipative_constant_b(spec, pair, a.a);
+    a.effective_mass = pair.effective_mass();
+    a.effective_radius = pair.effective_radius();
+    return make_adhesive_viscoelastic_force(a);
+  }
   if (spec.name == "power-law") {
     if (!spec.power_law) {
       throw InvalidArgument("power_d1", "(not given)", "the power-law constants D1, D2 and exponents");

@@ -32,6 +32,12 @@ class NormalForceModel {
   virtual double contact_radius(double overlap) const = 0;
   /// BP04 (8.65): the maximal overlap xi0 of an elastic collision at impact speed g [m].
   virtual double reference_overlap(double speed) const = 0;
+  /// Adhesive laws have a negative potential near contact; the engine then also
+  /// stops when U_K + U(xi) < 0 (the grains can never separate: they stick).
+  virtual bool adhesive() const { return false; }
+  /// Overlap [m] at which the contact starts and ends: 0, or a small cutoff for a
+  /// force that is singular at xi = 0 (BP04 footnote 2).
+  virtual double cutoff_overlap(double speed) const { (void)speed; return 0.0; }
 };
 
 /// Geometry and inertia shared by the Hertz-type laws.
@@ -60,5 +66,21 @@ struct PowerLawParameters {
 std::unique_ptr<NormalForceModel> make_power_law_force(const PowerLawParameters& parameters,
                                                        double effective_mass,
                                                        double equivalent_radius);
+
+/// BP04's quasi-static estimate for adhesive viscoelastic spheres (§8.2.3):
+///   F_el  = rho xi^{3/2} - C xi^{3/4},  C = sqrt(6 pi gamma / D) R_eff^{3/4}        (8.56)
+///   F_dis = (3/2) A rho sqrt(xi) xi' + (3/4) B C xi' xi^{-1/4}                       (8.57)
+/// with B of (8.58) as corrected in SPEC §4.1. The xi^{-1/4} term is integrable but
+/// singular: the contact starts and ends at xi = cutoff_fraction * xi0 (footnote 2).
+struct AdhesiveViscoelasticParameters {
+  double rho = 0.0;              ///< Hertz constant [N/m^{3/2}]
+  double adhesion = 0.0;         ///< C of (8.56) [N/m^{3/4}]
+  double a = 0.0;                ///< A [s]
+  double b = 0.0;                ///< B [s]
+  double effective_mass = 0.0;
+  double effective_radius = 0.0;
+  double cutoff_fraction = 1e-12;
+};
+std::unique_ptr<NormalForceModel> make_adhesive_viscoelastic_force(const AdhesiveViscoelasticParameters& p);
 
 }  // namespace bounce::models

@@ -1,0 +1,64 @@
+#pragma once
+// K13's dynamic adhesive contact (Krijt et al. 2013, §2.2-3 and appendices B, C):
+// the contact radius a and the mutual approach delta are independent variables;
+//   m delta'' = -(F_E + F_D),  F_E = (2E*/3R)(3 a delta R - a^3)   K13 (2), (20)
+//   F_D = 2 A E* a delta'                                          K13 (19)
+//   a' = c f(beta),  beta = G_eff/gamma,  c = E* gamma/(sigma0^2 T_vis)   K13 (14)-(17)
+// with sigma0 = gamma/z0 and f the crack law of crack.hpp. The physics lives
+// here as plain functions of the state; dynamics/adhesive_collision.hpp
+// integrates it.
+
+#include "bounce/pair/pair.hpp"
+
+namespace bounce::models {
+
+struct KrijtParameters {
+  double effective_radius = 0.0;       ///< R [m]
+  double effective_modulus = 0.0;      ///< E* [Pa]
+  double effective_mass = 0.0;         ///< m* [kg]
+  double surface_energy = 0.0;         ///< gamma [J/m^2]
+  double relaxation_time = 0.0;        ///< T_vis [s]
+  double dissipative_constant = 0.0;   ///< A [s] of (19)
+  double z0 = 0.2e-9;                  ///< [m]; sigma0 = gamma / z0
+  double k = 0.02;                     ///< ratio of relaxed to instantaneous modulus
+
+  /// c = E* gamma / (sigma0^2 T_vis) = E* z0^2 / (gamma T_vis) [m/s], K13 (16).
+  double crack_speed_scale() const;
+};
+
+/// K13 after (18): A ~ T_vis / nu^2, nu the Poisson ratio. For unlike bodies we
+/// take the nu of the more compliant one (the larger (1 - nu^2)/E); a rigid wall
+/// does not deform, so body 1's.
+double krijt_dissipative_constant(double relaxation_time, const Pair& pair);
+
+/// K13 (14): beta = G_eff / gamma = E* (a^2 - delta R)^2 / (2 pi a R^2 gamma).
+double effective_surface_energy_ratio(const KrijtParameters& p, double contact_radius, double approach);
+/// K13 (2) and (19).
+double elastic_force(const KrijtParameters& p, double contact_radius, double approach);
+double bulk_dissipative_force(const KrijtParameters& p, double contact_radius, double rate);
+/// K13 (3) + (6): U_E + U_S.
+double contact_energy(const KrijtParameters& p, double contact_radius, double approach);
+
+/// K13 appendix B: at first contact delta = 0 and the contact grows at a crack
+/// speed that diverges for beta -> k. The integration starts where G_eff = 1.01 k
+/// gamma, i.e. a0 from (B.1); `time` is the time the crack law needs from beta = k
+/// to there (quadrature of (16) at delta = 0, ~1e-14 s for ice), and
+/// `crack_dissipated` the energy the formation released, -(U_E + U_S)(a0, 0).
+/// Singular-perturbation estimate (docs/adhesive.md): when the crack is much faster
+/// than the collision it follows the JKR equilibrium with |beta - 1| set by the speed
+/// it must keep up with, a ~ a/t_c, through (17): |beta - 1| ~ (phi/0.39)^{1/1.14},
+/// phi = a / (c t_c). The extra (hysteresis) loss is then about 2 pi a^2 gamma
+/// |beta - 1|; returned relative to the impact energy (1/2) m v^2.
+double krijt_hysteresis_estimate(const KrijtParameters& p, double speed);
+/// Below this estimate `krijt` is integrated as its fast-crack limit, jkr-viscoelastic:
+/// the measured difference there is below the full model's integration error (~1e-8).
+constexpr double krijt_reduction_threshold = 1e-11;
+
+struct InitialContact {
+  double contact_radius = 0.0;
+  double time = 0.0;
+  double crack_dissipated = 0.0;
+};
+InitialContact krijt_initial_contact(const KrijtParameters& p);
+
+}  // namespace bounce::models

@@ -1,0 +1,111 @@
+#include "bounce/models/crack.hpp"
+
+#include <cmath>
+
+namespace bounce::models {
+
+CrackSpeed crack_speed_high(double beta, double k) {  // K13 (16)
+  if (beta < 1.0) {
+    // f = 0.15 / (beta L), L = ln((1-k)/(1-beta)); dL/dbeta = 1/(1-beta)
+    const double l = std::log((1.0 - k) / (1.0 - beta));
+    const double f = 0.15 / (beta * l);
+    return {f, -f * (1.0 / beta + 1.0 / ((1.0 - beta) * l))};
+  }
+  if (beta > 1.0) {
+    // f = -0.24 beta / L, L = ln((1-k)/(1 - 1/beta)); dL/dbeta = -1/(beta (beta - 1))
+    const double l = std::log((1.0 - k) / (1.0 - 1.0 / beta));
+    const double f = -0.24 * beta / l;
+    return {f, f / beta + f / (l * beta * (beta - 1.0))};
+  }
+  return {0.0, 0.0};  // (16) tends to 0 at beta = 1 (logarithmically)
+}
+
+CrackSpeed crack_speed_low(double beta) {  // K13 (17), k = 0.02
+  if (beta < 1.0) {
+    const double x = 1.0 / beta - 1.0;  // dx/dbeta = -1/beta^2
+    const double p = std::pow(x, 1.116);
+    const double f = (0.1035 * x + 0.3421) * p;
+    const double dfdx = 0.1035 * p + (0.1035 * x + 0.3421) * 1.116 * p / x;
+    return {f, -dfdx / (beta * beta)};
+  }
+  if (beta > 1.0) {
+    const double x = beta - 1.0;
+    const double p = std::pow(x, 1.1403);
+    const double f = -(0.2112 * x + 0.3939) * p;
+    const double dfdx = -(0.2112 * p + (0.2112 * x + 0.3939) * 1.1403 * p / x);
+    return {f, dfdx};
+  }
+  return {0.0, 0.0};
+}
+
+namespace {
+// C1 blend from `from` (s = 0) to `to` (s = 1) with the smoothstep 3s^2 - 2s^3.
+CrackSpeed blend(const CrackSpeed& from, const CrackSpeed& to, double s, double ds_dbeta) {
+  const double w = s * s * (3.0 - 2.0 * s);
+  const double dw = 6.0 * s * (1.0 - s) * ds_dbeta;
+  return {from.value + w * (to.value - from.value),
+          from.derivative + w * (to.derivative - from.derivative) + dw * (to.value - from.value)};
+}
+}  // namespace
+
+namespace {
+CrackSpeed crack_speed_piecewise(double beta, double k) {
+  if (k != 0.02) return crack_speed_high(beta, k);
+  if (beta <= 0.29 || beta >= 3.7) return crack_speed_high(beta, k);
+  if (beta >= 0.31 && beta <= 3.6) return crack_speed_low(beta);
+  if (beta < 0.31) return blend(crack_speed_high(beta, k), crack_speed_low(beta), (beta - 0.29) / 0.02, 1.0 / 0.02);
+  return blend(crack_speed_low(beta), crack_speed_high(beta, k), (beta - 3.6) / 0.1, 1.0 / 0.1);
+}
+
+// Value, slope and curvature of the piecewise law at beta (curvature by a central
+// difference of the analytic slope, step 1e-3 of the join's half-width).
+struct Jet {
+  double f, d1, d2;
+};
+Jet jet(double beta, double k) {
+  const double h = 1e-3 * crack_smoothing_width;
+  const CrackSpeed c = crack_speed_piecewise(beta, k);
+  const double d2 = (crack_speed_piecewise(beta + h, k).derivative - crack_speed_piecewise(beta - h, k).derivative) / (2 * h);
+  return {c.value, c.derivative, d2};
+}
+
+// Quintic Hermite interpolation on [x0, x1] matching value, slope and curvature at
+// both ends, plus c t^3 (1 - t)^3 (zero value, slope and curvature at both ends)
+// with c such that f = 0 at the midpoint: the JKR equilibrium stays at beta = 1.
+CrackSpeed join(const Jet& a, const Jet& b, double x0, double x1, double x) {
+  const double h = x1 - x0;
+  auto hermite = [&](double t) {
+    const double t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
+    // Hermite basis for (f0, h f0', h^2 f0'', f1, h f1', h^2 f1'') and their t-derivatives.
+    const double h0 = 1 - 10 * t3 + 15 * t4 - 6 * t5, h1 = t - 6 * t3 + 8 * t4 - 3 * t5,
+                 h2 = 0.5 * (t2 - 3 * t3 + 3 * t4 - t5), h3 = 10 * t3 - 15 * t4 + 6 * t5,
+                 h4 = -4 * t3 + 7 * t4 - 3 * t5, h5 = 0.5 * (t3 - 2 * t4 + t5);
+    const double d0 = -30 * t2 + 60 * t3 - 30 * t4, d1 = 1 - 18 * t2 + 32 * t3 - 15 * t4,
+                 d2 = 0.5 * (2 * t - 9 * t2 + 12 * t3 - 5 * t4), d3 = 30 * t2 - 60 * t3 + 30 * t4,
+                 d4 = -12 * t2 + 28 * t3 - 15 * t4, d5 = 0.5 * (3 * t2 - 8 * t3 + 5 * t4);
+    const double value = h0 * a.f + h1 * h * a.d1 + h2 * h * h * a.d2 + h3 * b.f + h4 * h * b.d1 + h5 * h * h * b.d2;
+    const double slope = d0 * a.f + d1 * h * a.d1 + d2 * h * h * a.d2 + d3 * b.f + d4 * h * b.d1 + d5 * h * h * b.d2;
+    return CrackSpeed{value, slope};  // slope per unit t
+  };
+  const double c = -64.0 * hermite(0.5).value;  // t^3 (1 - t)^3 = 1/64 at t = 1/2
+  const double t = (x - x0) / h, u = t * (1.0 - t);
+  const CrackSpeed q = hermite(t);
+  return {q.value + c * u * u * u, (q.derivative + c * 3.0 * u * u * (1.0 - 2.0 * t)) / h};
+}
+}  // namespace
+
+CrackSpeed crack_speed_function(double beta, double k) {
+  const double w = crack_smoothing_width;
+  if (std::abs(beta - 1.0) >= w) return crack_speed_piecewise(beta, k);
+  // The edge jets depend on k only: computed once per k and thread.
+  thread_local double cached_k = -1.0;
+  thread_local Jet below{}, above{};
+  if (k != cached_k) {
+    below = jet(1.0 - w, k);
+    above = jet(1.0 + w, k);
+    cached_k = k;
+  }
+  return join(below, above, 1.0 - w, 1.0 + w, beta);
+}
+
+}  // namespace bounce::models

@@ -1,0 +1,83 @@
+#include "bounce/models/krijt.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include "bounce/contact/independent.hpp"
+#include "bounce/models/crack.hpp"
+
+namespace bounce::models {
+
+namespace {
+constexpr double pi = std::numbers::pi;
+}
+
+double KrijtParameters::crack_speed_scale() const {  // K13 (16): E* gamma / (sigma0^2 T_vis)
+  return effective_modulus * z0 * z0 / (surface_energy * relaxation_time);
+}
+
+double krijt_dissipative_constant(double relaxation_time, const Pair& pair) {  // K13 after (18)
+  const Material& m1 = pair.body1().material;
+  const Material& m2 = pair.body2().material;
+  double nu = m1.poisson_ratio;
+  if (!pair.body2().rigid) {
+    const double c1 = (1.0 - m1.poisson_ratio * m1.poisson_ratio) / m1.youngs_modulus;
+    const double c2 = (1.0 - m2.poisson_ratio * m2.poisson_ratio) / m2.youngs_modulus;
+    if (c2 > c1) nu = m2.poisson_ratio;
+  }
+  return relaxation_time / (nu * nu);
+}
+
+double effective_surface_energy_ratio(const KrijtParameters& p, double a, double delta) {  // K13 (14)
+  const independent::Geometry g{p.effective_radius, p.effective_modulus};
+  return independent::effective_surface_energy(g, a, delta) / p.surface_energy;
+}
+
+double elastic_force(const KrijtParameters& p, double a, double delta) {  // K13 (2)
+  return independent::elastic_force({p.effective_radius, p.effective_modulus}, a, delta);
+}
+
+double bulk_dissipative_force(const KrijtParameters& p, double a, double rate) {  // K13 (19)
+  return 2.0 * p.dissipative_constant * p.effective_modulus * a * rate;
+}
+
+double contact_energy(const KrijtParameters& p, double a, double delta) {  // K13 (3) + (6)
+  return independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta) +
+         independent::surface_energy(a, p.surface_energy);
+}
+
+double krijt_hysteresis_estimate(const KrijtParameters& p, double speed) {
+  const double rho = 4.0 / 3.0 * p.effective_modulus * std::sqrt(p.effective_radius);  // BP04 (8.24)
+  const double xi0 = std::pow(1.25 * p.effective_mass * speed * speed / rho, 0.4);    // BP04 (8.65)
+  const double a_eq = std::cbrt(9.0 * pi * p.surface_energy * p.effective_radius * p.effective_radius /
+                                (2.0 * p.effective_modulus));                         // K13 (10)
+  const double a = std::max(std::sqrt(p.effective_radius * xi0), a_eq);
+  const double t_c = 2.943275184 * std::pow(1.25 * p.effective_mass / rho, 0.4) * std::pow(speed, -0.2);
+  const double phi = a / (p.crack_speed_scale() * t_c);
+  const double energy = 0.5 * p.effective_mass * speed * speed;
+  return 2.0 * pi * a * a * p.surface_energy / energy * std::pow(phi / 0.39, 1.0 / 1.14);
+}
+
+InitialContact krijt_initial_contact(const KrijtParameters& p) {  // K13 appendix B
+  const double r2 = p.effective_radius * p.effective_radius;
+  // (B.1): at delta = 0, beta = E* a^3 / (2 pi R^2 gamma), so a = (2 pi R^2 beta gamma / E*)^{1/3}.
+  auto radius = [&](double beta) { return std::cbrt(2.0 * pi * r2 * beta * p.surface_energy / p.effective_modulus); };
+  InitialContact c;
+  const double beta0 = 1.01 * p.k;  // "1.01 k beta" of K13 read as G_eff = 1.01 k gamma (SPEC §4.2)
+  c.contact_radius = radius(beta0);
+  // t = int da / a' with da = a dbeta / (3 beta) and a' = c f(beta): substitute beta = k + (beta0 - k) s^2
+  // so that the integrand (which vanishes like f^-1 at beta = k) is smooth.
+  const double speed = p.crack_speed_scale();
+  auto integrand = [&](double s) {
+    const double beta = p.k + (beta0 - p.k) * s * s;
+    const double f = crack_speed_function(beta, p.k).value;
+    return radius(beta) / (3.0 * beta) / (speed * f) * 2.0 * (beta0 - p.k) * s;
+  };
+  c.time = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(integrand, 0.0, 1.0, 10, 1e-12);
+  c.crack_dissipated = -contact_energy(p, c.contact_radius, 0.0);
+  return c;
+}
+
+}  // namespace bounce::models
