@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
 #include "event_integrator.hpp"
 
 namespace bounce::dynamics {
@@ -41,7 +42,8 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
   const double energy_unit = effective_mass * speed * speed;
   const ScaledSystem system{&model, xi0, speed, xi0 / energy_unit};
 
-  std::vector<detail::Event<3>> events(3);
+  const double cutoff = model.cutoff_overlap(speed) / xi0;  // 0 unless the force is singular at contact
+  std::vector<detail::Event<3>> events(4);
   // 0: maximum compression (xi' falls through zero); arms the end-of-contact event.
   events[0].g = [](double, const State& y) { return y[1]; };
   events[0].direction = -1;
@@ -49,7 +51,7 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
   events[0].arms = 1;
   // 1: end of contact.
   if (options.end_rule == EndRule::overlap) {
-    events[1].g = [](double, const State& y) { return y[0]; };
+    events[1].g = [cutoff](double, const State& y) { return y[0] - cutoff; };
   } else {
     events[1].g = [&](double, const State& y) {
       return model.force_sign(xi0 * y[0], speed * y[1]);
@@ -63,10 +65,23 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
   events[2].direction = -1;
   events[2].terminal = true;
   events[2].armed = options.end_rule == EndRule::force;
+  // 3: adhesive laws: the mechanical energy (1/2) xi'^2 + U(xi)/m never increases and
+  // must be >= 0 at separation (U(0) = 0): once negative, the grains stick.
+  auto mechanical = [&](const State& y) {
+    return 0.5 * y[1] * y[1] + model.elastic_energy(xi0 * y[0]) / energy_unit;
+  };
+  events[3].g = [&](double, const State& y) { return mechanical(y); };
+  events[3].direction = -1;
+  events[3].terminal = true;
+  events[3].armed = model.adhesive();
+  if (model.adhesive() && options.end_rule == EndRule::force) {
+    throw InvalidArgument("contact_end", "force",
+                          "overlap for adhesive models (their contact ends when the overlap returns to 0)");
+  }
 
   CollisionOutcome out;
   out.method = "integrate";
-  const State start{0.0, 1.0, 0.0};
+  const State start{cutoff, 1.0, 0.0};
 
   auto sample = [&](double t, const State& y) {
     const double xi = xi0 * y[0];
@@ -99,14 +114,21 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
   if (options.record_trajectory) sample(result.terminal.time, end);
 
   out.steps = result.steps;
-  out.cor = -end[1];
-  out.outcome = Outcome::bounce;
+  const bool stuck = result.terminal.index == 3;
+  out.cor = stuck ? 0.0 : -end[1];
+  out.outcome = stuck ? Outcome::stick : Outcome::bounce;
   out.contact_time = result.terminal.time * time_unit;
   for (const auto& hit : result.hits) {
     if (hit.index == 0) {
       out.max_overlap = hit.state[0] * xi0;
       out.time_of_max_overlap = hit.time * time_unit;
     }
+  }
+  if (stuck && result.hits.empty()) {  // sticking certain while still compressing
+    out.max_overlap = end[0] * xi0;
+    out.time_of_max_overlap = out.contact_time;
+    out.notes.push_back(
+        "sticking was certain before the maximum compression: max_overlap is the overlap at that time");
   }
   EnergyBudget& e = out.energy;
   e.initial_kinetic = 0.5 * energy_unit;

@@ -59,6 +59,7 @@ struct CollisionOutcome {
   EnergyBudget energy;
   std::vector<TrajectorySample> trajectory;  ///< empty unless requested
   std::vector<std::string> warnings;         ///< validity conditions that do not hold
+  std::vector<std::string> notes;            ///< how the result was obtained, when not obvious
   std::string method;                        ///< "integrate", "master" or "closed-form"
   long steps = 0;                            ///< integration steps taken (0 for master)
 };

@@ -1,0 +1,42 @@
+#pragma once
+// Head-on collisions of adhesive grains: K13's dynamic model (`krijt`) and its
+// instantaneous-crack limit (`jkr-viscoelastic`).
+
+#include "bounce/dynamics/integration.hpp"
+#include "bounce/dynamics/outcome.hpp"
+#include "bounce/models/krijt.hpp"
+
+namespace bounce::dynamics {
+
+struct AdhesiveCollisionOptions {
+  /// Relative tolerance (scaled units) of the stiff engine (krijt) and, times 1e-2, of
+  /// dopri5 (jkr-viscoelastic). With RODAS, 1e-8 gives COR errors <= 5e-9 for
+  /// T_vis 1e-16 to 1e-8 s (docs/benchmarks.md).
+  double relative_tolerance = 1e-8;
+  long max_steps = 2'000'000;  ///< ~4 s of CVODE steps: fail fast rather than stall
+  bool record_trajectory = false;
+  int trajectory_points = 600;       ///< evenly spaced samples over ~2 Hertz contact times (plus every step)
+  /// Keep integrating a sticking collision until this time [s] (trajectories of
+  /// the settling grains, K13 figs 3 and C2); 0: stop as soon as sticking is certain.
+  double follow_time = 0.0;
+  /// The contact counts as broken at beta = (1 - break_margin) / k: the crack
+  /// speed diverges at 1/k, and the rest of the run-away is instantaneous.
+  double break_margin = 1e-6;
+  StiffEngine engine = StiffEngine::rodas;  ///< krijt only (jkr-viscoelastic is not stiff)
+};
+
+/// K13: delta, delta', a and the two dissipations integrated with CVODE (BDF,
+/// analytic Jacobian). Ends when beta reaches its upper bound 1/k (the crack runs
+/// away: a -> 0 with a' -> -inf in no time; the energy U_E + U_S left then is
+/// crack dissipation) or when the mechanical energy U_K + U_E + U_S turns negative
+/// (it never increases, so the grains can never separate: stick).
+CollisionOutcome integrate_krijt_collision(const models::KrijtParameters& p, double speed,
+                                           const AdhesiveCollisionOptions& options = {});
+
+/// The same equations with a on the JKR equilibrium (beta = 1, an instantaneous
+/// crack) plus the bulk force (19): snap-on to the JKR radius at delta = 0, release
+/// at the JKR separation overlap delta_c. Integrated with dopri5 (not stiff).
+CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParameters& p, double speed,
+                                                      const AdhesiveCollisionOptions& options = {});
+
+}  // namespace bounce::dynamics

@@ -1,0 +1,195 @@
+#pragma once
+// Private: K13's equations as a stiff system (scaled state delta, delta', a and the
+// two dissipated energies), shared by dynamics/adhesive_collision.cpp and the tests.
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+
+#include "bounce/contact/jkr.hpp"
+#include "bounce/models/crack.hpp"
+#include "bounce/models/krijt.hpp"
+#include "bounce/pair/mixing.hpp"
+#include "stiff.hpp"
+
+namespace bounce::dynamics::detail {
+
+constexpr double pi = std::numbers::pi;
+
+// Units of the scaled problem: lengths from the larger of the Hertz overlap and the
+// JKR separation overlap, speeds from the impact speed, energies from (1/2) m g^2.
+struct Scales {
+  double length;   // delta
+  double radius;   // a
+  double speed;    // delta'
+  double time;     // length / speed
+  double energy;   // (1/2) m g^2
+};
+
+inline Scales scales_for(const models::KrijtParameters& p, double speed) {
+  const double rho = hertz_constant(p.effective_modulus, p.effective_radius);
+  const double xi0 = std::pow(1.25 * p.effective_mass * speed * speed / rho, 0.4);  // BP04 (8.65)
+  const jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
+  Scales s;
+  s.length = std::max(xi0, std::abs(jkr::separation_overlap(j)));
+  s.radius = std::max(std::sqrt(p.effective_radius * xi0), jkr::equilibrium_contact_radius(j));
+  s.speed = speed;
+  s.time = s.length / speed;
+  s.energy = 0.5 * p.effective_mass * speed * speed;
+  return s;
+}
+
+// Elastic Hertz contact time in the scaled units (a time scale for budgets and sampling).
+inline double scaled_hertz_time(const models::KrijtParameters& p, double speed, const Scales& s) {
+  const double rho = hertz_constant(p.effective_modulus, p.effective_radius);
+  return 3.0 * std::pow(1.25 * p.effective_mass / rho, 0.4) * std::pow(speed, -0.2) / s.time;
+}
+
+// Where the crack runs (beta near k: closing at a speed that diverges; beta near 1/k:
+// the run-away of the opening crack; or the whole pull-off of a crack so fast that a
+// collapses from the JKR fold in 1e-12 of the contact time), a' is large and a(t)
+// singular; a is then the better independent variable (detail::SwappedIndependent).
+// The phases of a collision are `closing` (beta < 0.25, where a' >= 2.2 c), `time`,
+// and `opening` (beta > 4, where a' <= -3.5 c, or beta > 1 with the contact
+// shrinking at a relative rate |a'/a| above 1e3 per time unit L/g ~ t_H/3), with
+// hysteresis (leave at 0.25; at beta < 3 and |a'/a| < 1e2) so that the phases cannot
+// chatter and a' never vanishes inside an a phase. The equations are the same in
+// every phase.
+enum class Phase { time, closing, opening };
+constexpr double closing_exit = 0.25, closing_entry = 0.2;
+constexpr double opening_entry = 4.0, opening_exit = 3.0;
+constexpr double collapse_entry = 1e3, collapse_exit = 1e2;  // |a'/a| in scaled time
+
+class KrijtSystem final : public StiffSystem {
+ public:
+  KrijtSystem(const models::KrijtParameters& p, const Scales& s, bool stick_event, double break_margin)
+      : p_(p), s_(s), c_(p.crack_speed_scale()), beta_break_((1.0 - break_margin) / p.k),
+        stick_event_(stick_event) {
+    const jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
+    fold_overlap_ = jkr::separation_overlap(j);
+    fold_radius_ = jkr::separation_contact_radius(j);
+    fold_energy_ = models::contact_energy(p, fold_radius_, fold_overlap_) / s.energy;
+  }
+
+  int size() const override { return 5; }
+
+  struct Physical {
+    double delta, rate, a, beta;
+  };
+  Physical physical(const double* y) const {
+    Physical x{y[0] * s_.length, y[1] * s_.speed, y[2] * s_.radius, 0.0};
+    x.beta = x.a > 0.0 ? models::effective_surface_energy_ratio(p_, x.a, x.delta) : 0.0;
+    return x;
+  }
+  bool in_domain(const Physical& x) const { return x.a > 0.0 && x.beta > p_.k && x.beta < 1.0 / p_.k; }
+
+  int rhs(double, const double* y, double* dydt) const override {
+    const Physical x = physical(y);
+    if (!in_domain(x)) return 1;  // recoverable: CVODE retries a smaller step
+    const double fe = models::elastic_force(p_, x.a, x.delta);
+    const double fd = models::bulk_dissipative_force(p_, x.a, x.rate);
+    const double a_dot = c_ * models::crack_speed_function(x.beta, p_.k).value;
+    dydt[0] = y[1];
+    dydt[1] = -(fe + fd) / p_.effective_mass * s_.time / s_.speed;                                  // K13 (20)
+    dydt[2] = a_dot * s_.time / s_.radius;                                                          // K13 (16)-(17)
+    dydt[3] = 2.0 * pi * x.a * p_.surface_energy * (1.0 - x.beta) * a_dot * s_.time / s_.energy;  // K13 (C.2)
+    dydt[4] = fd * x.rate * s_.time / s_.energy;                                                   // K13 (C.3)
+    return 0;
+  }
+
+  int jacobian(double, const double* y, double* j, double* dfdt) const override {
+    const Physical x = physical(y);
+    if (!in_domain(x)) return 1;
+    if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);  // autonomous
+    const double r = p_.effective_radius, e = p_.effective_modulus, m = p_.effective_mass;
+    const double gamma = p_.surface_energy, a_coef = p_.dissipative_constant;
+    const models::CrackSpeed f = models::crack_speed_function(x.beta, p_.k);
+    const double mismatch = x.a * x.a - x.delta * r;
+    // d beta / d delta and d beta / d a from K13 (14).
+    const double dbeta_ddelta = -e * mismatch / (pi * x.a * r * gamma);
+    const double dbeta_da = e * mismatch * (3.0 * x.a * x.a + x.delta * r) / (2.0 * pi * x.a * x.a * r * r * gamma);
+    const double a_dot = c_ * f.value;
+    const double da_ddelta = c_ * f.derivative * dbeta_ddelta;
+    const double da_da = c_ * f.derivative * dbeta_da;
+    // Physical Jacobian (columns: delta, rate, a, U_CD, U_BD).
+    double jp[5][5] = {};
+    jp[0][1] = 1.0;
+    jp[1][0] = -2.0 * e * x.a / m;
+    jp[1][1] = -2.0 * a_coef * e * x.a / m;
+    jp[1][2] = -(2.0 * e * (x.delta - x.a * x.a / r) + 2.0 * a_coef * e * x.rate) / m;
+    jp[2][0] = da_ddelta;
+    jp[2][2] = da_da;
+    const double w = 2.0 * pi * gamma;  // U_CD' = w a (1 - beta) a'
+    jp[3][0] = w * x.a * (-dbeta_ddelta * a_dot + (1.0 - x.beta) * da_ddelta);
+    jp[3][2] = w * ((1.0 - x.beta) * a_dot - x.a * dbeta_da * a_dot + x.a * (1.0 - x.beta) * da_da);
+    jp[4][1] = 4.0 * a_coef * e * x.a * x.rate;  // U_BD' = 2 A E* a rate^2
+    jp[4][2] = 2.0 * a_coef * e * x.rate * x.rate;
+    const double scale[5] = {s_.length, s_.speed, s_.radius, s_.energy, s_.energy};
+    for (int i = 0; i < 5; ++i) {
+      for (int k = 0; k < 5; ++k) j[i * 5 + k] = jp[i][k] * s_.time / scale[i] * scale[k];
+    }
+    return 0;
+  }
+
+  int event_count() const override { return 6; }
+  void events(double t, const double* y, double* g) const override {
+    const Physical x = physical(y);
+    g[0] = y[1];                                       // maximum compression
+    g[1] = beta_break_ - x.beta;                       // the contact breaks
+    g[2] = stick_event_ ? mechanical_energy(y) - sticking_threshold(x) : 1.0;  // sticking is certain
+    switch (phase_) {                                  // 3, 4: the phase changes
+      case Phase::time:
+        g[3] = x.beta - closing_entry;
+        g[4] = std::min(opening_entry - x.beta, relative_crack_rate(x) + collapse_entry);
+        break;
+      case Phase::closing:
+        g[3] = closing_exit - x.beta;
+        g[4] = 1.0;
+        break;
+      case Phase::opening:
+        g[3] = std::max(x.beta - opening_exit, -(relative_crack_rate(x) + collapse_exit));
+        g[4] = 1.0;
+        break;
+    }
+    g[5] = time_limit_ - t;                            // the time budget
+  }
+  void set_phase(Phase phase) { phase_ = phase; }
+  void set_time_limit(double t) { time_limit_ = t; }
+
+  // a'/a per scaled time unit (positive: the contact grows).
+  double relative_crack_rate(const Physical& x) const {
+    return c_ * models::crack_speed_function(x.beta, p_.k).value / x.a * s_.time;
+  }
+
+  // The energy below which the grains can never separate [scaled]. U_K + U_E + U_S
+  // never increases and equals U_K >= 0 after a separation, so 0 always (SPEC §4.2).
+  // Sharper, from the sign structure of the crack law (a' > 0 iff beta < 1): while
+  // delta >= delta_c (the JKR fold) a contact with a >= a_c cannot shrink below a_c
+  // (at a = a_c, beta <= 1), and a break needs delta < delta_c; crossing delta_c with
+  // a >= a_c costs U(a, delta_c) >= U(a_c, delta_c) > 0, the energy at the fold
+  // (U increases with a where beta > 1). So with delta >= delta_c and a >= a_c the
+  // grains stick once U_K + U_E + U_S < U(a_c, delta_c) (docs/adhesive.md). Without it
+  // a weakly damped bound pair oscillated for millions of steps before reaching 0.
+  double sticking_threshold(const Physical& x) const {
+    return x.delta >= fold_overlap_ && x.a >= fold_radius_ ? fold_energy_ : 0.0;
+  }
+
+  // (U_K + U_E + U_S) / (m g^2 / 2)
+  double mechanical_energy(const double* y) const {
+    const Physical x = physical(y);
+    return y[1] * y[1] + models::contact_energy(p_, x.a, x.delta) / s_.energy;
+  }
+
+ private:
+  models::KrijtParameters p_;
+  Scales s_;
+  double c_;
+  double beta_break_;
+  bool stick_event_;
+  double fold_overlap_, fold_radius_, fold_energy_;  // JKR fold delta_c, a_c, U(a_c, delta_c) [scaled]
+  Phase phase_ = Phase::time;
+  double time_limit_ = 0.0;
+};
+
+}  // namespace bounce::dynamics::detail
