@@ -129,7 +129,6 @@ IntegrationResult<N> integrate_until_event(const System& system, const State<N>&
       if (first < 0) break;
       Event<N>& e = events[static_cast<std::size_t>(first)];
       EventHit<N> hit{first, first_time, first_time >= tb ? yb : at(first_time)};
-
       if (e.arms >= 0) {
         const auto j = static_cast<std::size_t>(e.arms);
         events[j].armed = true;
