@@ -9,6 +9,10 @@
 
 #include <fmt/format.h>
 
+#include "bounce/analytic/adhesive.hpp"
+#include "bounce/analytic/master_curve.hpp"
+#include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/surface_forces.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/pair/mixing.hpp"
@@ -108,14 +112,14 @@ Material BodyOptions::resolve_material(const MaterialTable& table, bool second,
   return m;
 }
 
-Pair BodyOptions::pair() const {
+Pair BodyOptions::pair(std::optional<double> radius) const {
   const MaterialTable materials = table();
   if (wall_ && rigid_wall_) {
     throw InvalidArgument("--rigid-wall", "true", "either --wall or --rigid-wall, not both");
   }
   const Material m1 = resolve_material(materials, false, std::nullopt);
   const Material m2 = resolve_material(materials, true, m1);
-  const double radius1 = numbers_.require("--radius", "a radius > 0 m for body 1");
+  const double radius1 = radius ? *radius : numbers_.require("--radius", "a radius > 0 m for body 1");
   Body b1 = sphere(m1, radius1);
   Body b2;
   if (wall_ || rigid_wall_) {
@@ -286,7 +290,8 @@ double now_seconds() {
 
 ModelOptions::ModelOptions(CLI::App* app, NumberOptions& numbers) : numbers_(numbers) {
   app->add_option("--model", model_,
-                  "hertz | viscoelastic | viscoelastic-shifted | power-law (default viscoelastic)");
+                  "hertz | viscoelastic | viscoelastic-shifted | power-law | adhesive-viscoelastic | krijt | "
+                  "jkr-viscoelastic (default viscoelastic)");
   numbers_.add("--A", "dissipative constant A [s] (BP04 (8.38), BSHP96 (23))");
   numbers_.add("--eta1", "shear viscosity eta1 [Pa s] (A from BP04 (8.38))");
   numbers_.add("--eta2", "bulk viscosity eta2 [Pa s] (A from BP04 (8.38))");
@@ -296,6 +301,14 @@ ModelOptions::ModelOptions(CLI::App* app, NumberOptions& numbers) : numbers_(num
   app->add_option("--curvature-radii", curvature1_, "principal radii R1,R2 of body 1 [m] (convex bodies)");
   app->add_option("--curvature-radii2", curvature2_, "principal radii R1',R2' of body 2 [m]");
   numbers_.add("--angle", "angle phi between the planes of R1 and R1' [rad] (convex bodies)");
+  numbers_.add("--tvis", "viscous relaxation time T_vis [s] (krijt; A = T_vis/nu^2 unless --A)");
+  numbers_.add("--z0", "equilibrium separation z0 [m] (krijt crack law, sigma0 = gamma/z0; default 2e-10)");
+  numbers_.add("--k", "relaxed / instantaneous modulus k of the crack law (default 0.02)");
+  numbers_.add("--B", "dissipative constant B [s] of BP04 (8.57) (adhesive-viscoelastic; default A)");
+  numbers_.add("--yield", "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)");
+  app->add_option("--adhesive-tolerance", adhesive_tolerance_,
+                  "relative tolerance of krijt / jkr-viscoelastic integration (default 1e-8)");
+  app->add_option("--stiff-engine", stiff_engine_, "krijt: rodas | cvode (default rodas; cvode cross-checks)");
   numbers_.add("--power-d1", "power-law D1 [m^{1-alpha}/s^2]");
   numbers_.add("--power-alpha", "power-law elastic exponent alpha (default 1.5)");
   numbers_.add("--power-d2", "power-law D2 [m^{1-gamma-beta} s^{beta-2}]");
@@ -317,6 +330,11 @@ models::ModelSpec ModelOptions::spec() const {
     const auto r2 = curvature2_.empty() ? r1 : parse_radii("--curvature-radii2", curvature2_);
     s.curvatures = convex::Curvatures{r1[0], r1[1], r2[0], r2[1], numbers_.get("--angle").value_or(0.0)};
   }
+  s.relaxation_time = numbers_.get("--tvis");
+  s.z0 = numbers_.get("--z0").value_or(0.2e-9);
+  s.k = numbers_.get("--k").value_or(0.02);
+  s.dissipative_constant_b = numbers_.get("--B");
+  s.yield_strength = numbers_.get("--yield");
   if (s.name == "power-law") {
     models::PowerLawParameters p;
     p.d1 = numbers_.require("--power-d1", "D1 > 0 for the power-law model");
@@ -335,7 +353,47 @@ CollideOptions ModelOptions::collide_options() const {
   require_open_interval("tolerance", tolerance_, 1e-15, 1e-3, "tolerance");
   o.integration.relative_tolerance = tolerance_;
   o.integration.absolute_tolerance = tolerance_;
+  o.adhesive_tolerance = require_open_interval("adhesive_tolerance", adhesive_tolerance_, 1e-14, 1e-3, "tolerance");
+  if (stiff_engine_ == "cvode") {
+    o.stiff_engine = dynamics::StiffEngine::cvode;
+  } else if (stiff_engine_ != "rodas") {
+    throw InvalidArgument("--stiff-engine", stiff_engine_, "rodas or cvode");
+  }
   return o;
+}
+
+nlohmann::json adhesive_closed_forms(const Pair& pair, const models::ModelSpec& spec, double v) {
+  nlohmann::json j;
+  const double gamma = pair.require_surface_energy("model " + spec.name);
+  const double r = pair.effective_radius(), e = pair.effective_modulus(), m = pair.effective_mass();
+  const double v_c = analytic::sticking_velocity_jkr(m, r, e, gamma);
+  const double t_h = analytic::hertz_contact_time_k13(m, r, e, v);
+  j["sticking_velocity_jkr"] = v_c;
+  j["sticking_velocity_k13_25"] = analytic::sticking_velocity_k13(m, r, e, gamma);
+  j["e_jkr"] = analytic::cor_jkr(v, v_c);
+  j["hertz_time_k13_22"] = t_h;
+  j["tabor_parameter"] = surface::tabor_parameter(r, e, gamma, spec.z0);
+  if (spec.relaxation_time || spec.dissipative_constant) {
+    const double a = spec.name == "krijt" || spec.name == "jkr-viscoelastic"
+                         ? models::krijt_parameters(spec, pair).dissipative_constant
+                         : models::dissipative_constant(spec, pair);
+    j["dissipative_constant"] = a;
+    j["e_d"] = analytic::cor_viscous_k13(a, t_h);
+    j["e_i"] = analytic::cor_independent(j["e_jkr"].get<double>(), j["e_d"].get<double>());
+  }
+  if (spec.name == "adhesive-viscoelastic") {
+    const double w0 = analytic::tensile_work(r, e, gamma);
+    const ViscoelasticScales s = viscoelastic_scales(pair, spec, v);
+    j["tensile_work_bp04_8_95"] = w0;
+    j["e_ad_bp04_8_98"] = analytic::cor_adhesive_bp04(analytic::master_cor(s.kappa, dynamics::EndRule::overlap), v, w0, m);
+  }
+  if (spec.yield_strength) {
+    const double v_y = analytic::yield_velocity(r, m, e, *spec.yield_strength);
+    j["yield_velocity"] = v_y;
+    j["e_plastic"] = analytic::cor_thornton_ning(v, v_y);
+    j["plastic_length_scale"] = analytic::plastic_length_scale(m, v, r, e);
+  }
+  return j;
 }
 
 nlohmann::json outcome_json(const dynamics::CollisionOutcome& o, bool with_trajectory) {
@@ -353,6 +411,7 @@ nlohmann::json outcome_json(const dynamics::CollisionOutcome& o, bool with_traje
                  {"plastic_dissipated", e.plastic_dissipated}, {"elastic_remaining", e.elastic_remaining},
                  {"surface_remaining", e.surface_remaining}, {"closure_error", e.closure_error}};
   j["warnings"] = o.warnings;
+  j["notes"] = o.notes;
   if (with_trajectory) {
     nlohmann::json t = nlohmann::json::array();
     for (const auto& s : o.trajectory) {

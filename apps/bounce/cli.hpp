@@ -51,8 +51,9 @@ class NumberOptions {
 class BodyOptions {
  public:
   explicit BodyOptions(CLI::App* app);
-  /// Build and validate the pair; errors name the CLI options.
-  Pair pair() const;
+  /// Build and validate the pair; errors name the CLI options. With `radius`,
+  /// body 1 has that radius (and body 2 too unless --radius2 or a wall).
+  Pair pair(std::optional<double> radius = std::nullopt) const;
   /// The table in use (built-in, or --materials-file).
   MaterialTable table() const;
 
@@ -84,7 +85,15 @@ class ModelOptions {
   std::string method_ = "auto";
   std::string curvature1_, curvature2_;
   double tolerance_ = 1e-12;
+  double adhesive_tolerance_ = 1e-8;
+  std::string stiff_engine_ = "rodas";
 };
+
+/// K13's and BP04's closed forms for an adhesive collision at `velocity` (JSON):
+/// v_c (25) and exact, e_JKR (24), e_D (26), e_I (27), t_H (22), the Tabor
+/// parameter; with a yield strength v_y (28), e_P (29), l (33); for
+/// adhesive-viscoelastic BP04's W0 (8.95) and e_ad (8.98).
+nlohmann::json adhesive_closed_forms(const Pair& pair, const models::ModelSpec& spec, double velocity);
 
 /// The JSON object of a collision outcome (SPEC §7 fields plus the energy budget).
 nlohmann::json outcome_json(const dynamics::CollisionOutcome& outcome, bool with_trajectory);

@@ -5,10 +5,14 @@
 
 #include <fmt/format.h>
 
+#include "bounce/analytic/adhesive.hpp"
 #include "bounce/analytic/master_curve.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/jkr.hpp"
+#include "bounce/contact/surface_forces.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/dynamics/adhesive_collision.hpp"
 #include "bounce/dynamics/normal_collision.hpp"
 
 namespace bounce {
@@ -69,8 +73,60 @@ dynamics::CollisionOutcome from_master(const models::ModelSpec& spec, const Pair
   return out;
 }
 
+// K13 §2.1.2: the JKR-based adhesive models assume the Tabor parameter mu > 5; K13
+// appendix A: where bulk and crack viscosity become negligible (reported as notes
+// that the elastic JKR estimates do not apply).
+void add_adhesive_warnings(dynamics::CollisionOutcome& out, const models::ModelSpec& spec, const Pair& pair) {
+  const double gamma = *pair.surface_energy();
+  const double mu = surface::tabor_parameter(pair.effective_radius(), pair.effective_modulus(), gamma, spec.z0);
+  if (mu < 5.0) {
+    out.warnings.push_back(fmt::format(
+        "Tabor parameter mu = {:.3g} < 5 (K13 (11), z0 = {:g} m): the JKR-based adhesive model may not apply "
+        "(DMT below 0.1, Maugis-Dugdale between)", mu, spec.z0));
+  }
+  if (spec.name != "krijt" || out.contact_time <= 0.0) return;
+  const models::KrijtParameters p = models::krijt_parameters(spec, pair);
+  const double nu = std::sqrt(p.relaxation_time / p.dissipative_constant);
+  const double bulk = analytic::bulk_quasi_static_limit(nu, out.contact_time);
+  if (p.relaxation_time >= bulk) {
+    out.warnings.push_back(fmt::format(
+        "K13 (A.2) does not hold: T_vis = {:.3g} s >= 1e-2 nu^2 t_c = {:.3g} s, bulk viscous dissipation is "
+        "significant (the elastic JKR estimate (24) does not apply)", p.relaxation_time, bulk));
+  }
+  const double a = out.max_overlap > 0.0 ? std::sqrt(pair.effective_radius() * out.max_overlap)
+                                         : jkr::equilibrium_contact_radius({pair.effective_radius(), pair.effective_modulus(), gamma});
+  const double crack = analytic::crack_quasi_static_limit(p.z0, a, p.effective_modulus, gamma, out.contact_time);
+  if (p.relaxation_time >= crack) {
+    out.warnings.push_back(fmt::format(
+        "K13 (A.4) does not hold: T_vis = {:.3g} s >= {:.3g} s, adhesion hysteresis at the crack is "
+        "significant (the elastic JKR estimate (24) does not apply)", p.relaxation_time, crack));
+  }
+}
+
+// K13 (28)-(30): plastic losses added to any model when a yield strength is given.
+void add_plastic_losses(dynamics::CollisionOutcome& out, const Pair& pair, double velocity, double yield) {
+  require_positive("yield", yield, "yield strength Y [Pa]");
+  const double v_y = analytic::yield_velocity(pair.effective_radius(), pair.effective_mass(),
+                                              pair.effective_modulus(), yield);
+  const double e_p = analytic::cor_thornton_ning(velocity, v_y);
+  dynamics::EnergyBudget& e = out.energy;
+  if (out.outcome == dynamics::Outcome::stick) return;  // nothing left to lose plastically
+  const double e_total = analytic::cor_with_plastic(out.cor, e_p);
+  e.plastic_dissipated = e.final_kinetic - e.initial_kinetic * e_total * e_total;
+  e.final_kinetic = e.initial_kinetic * e_total * e_total;
+  if (e_total == 0.0) {
+    out.outcome = dynamics::Outcome::stick;
+    out.warnings.push_back(
+        "K13 (30) gives e^2 < 0: the plastic loss exceeds what adhesion and viscosity left, the grains stick");
+  }
+  out.cor = e_total;
+}
+
 double viscous_time_scale(const models::ModelSpec& spec, const Pair& pair) {
   if (spec.name == "power-law") return 0.0;
+  if (models::model_info(spec.name).dynamic_contact) {
+    return spec.relaxation_time.value_or(models::dissipative_constant(spec, pair));
+  }
   const double a = models::dissipative_constant(spec, pair);
   if (spec.shear_viscosity || spec.bulk_viscosity) {
     // BSHP96 (B13): tau_i = eta_i / E_i with E1 = E/(1+nu), E2 = E/(3(1-2nu)).
@@ -111,6 +167,38 @@ ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::ModelSpec
 dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& spec, double velocity,
                                    const CollideOptions& options) {
   require_positive("velocity", velocity, "impact velocity [m/s]");
+  const models::ModelInfo& info = models::model_info(spec.name);
+  if (info.dynamic_contact) {
+    if (options.method == Method::master) {
+      throw InvalidArgument("method", "master", fmt::format("integrate for model {} (it has no master curve)", spec.name));
+    }
+    if (spec.end_rule == dynamics::EndRule::force) {
+      throw InvalidArgument("contact_end", "force", fmt::format("overlap for model {} (its contact ends when the crack runs away)", spec.name));
+    }
+    const models::KrijtParameters p = models::krijt_parameters(spec, pair);
+    dynamics::AdhesiveCollisionOptions o;
+    o.relative_tolerance = options.adhesive_tolerance;
+    o.engine = options.stiff_engine;
+    o.record_trajectory = options.record_trajectory;
+    o.trajectory_points = options.trajectory_points;
+    o.follow_time = options.follow_time;
+    o.max_steps = std::min(options.integration.max_steps, o.max_steps);
+    const double hysteresis = models::krijt_hysteresis_estimate(p, velocity);
+    const bool reduced = spec.name == "krijt" && hysteresis < models::krijt_reduction_threshold;
+    dynamics::CollisionOutcome out = spec.name == "krijt" && !reduced
+                                         ? dynamics::integrate_krijt_collision(p, velocity, o)
+                                         : dynamics::integrate_jkr_viscoelastic_collision(p, velocity, o);
+    if (reduced) {
+      out.notes.push_back(fmt::format(
+          "the crack is so fast that its hysteresis ({:.2g} of the impact energy) is below the integration "
+          "error: integrated as the fast-crack limit jkr-viscoelastic (singular-perturbation reduction)",
+          hysteresis));
+    }
+    if (spec.yield_strength) add_plastic_losses(out, pair, velocity, *spec.yield_strength);
+    add_validity_warnings(out, pair, velocity, viscous_time_scale(spec, pair));
+    add_adhesive_warnings(out, spec, pair);
+    return out;
+  }
   const auto force = models::make_normal_force(spec, pair);  // validates the model
   bool use_master = false;
   switch (options.method) {
@@ -141,7 +229,9 @@ dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& sp
     o.trajectory_points = options.trajectory_points;
     out = dynamics::integrate_normal_collision(*force, pair.effective_mass(), velocity, o);
   }
+  if (spec.yield_strength) add_plastic_losses(out, pair, velocity, *spec.yield_strength);
   add_validity_warnings(out, pair, velocity, viscous_time_scale(spec, pair));
+  if (info.adhesive) add_adhesive_warnings(out, spec, pair);
   return out;
 }
 
@@ -160,6 +250,19 @@ std::vector<dynamics::CollisionOutcome> collide_curve(const Pair& pair, const mo
     if (progress) progress(i + 1, velocities.size());
   }
   return out;
+}
+
+MergedBody merged_body(const Pair& pair, double velocity) {  // momentum conservation
+  MergedBody m;
+  const double m1 = pair.body1().mass(), m2 = pair.body2().mass();
+  if (pair.body2().is_wall()) {
+    m.mass = std::numeric_limits<double>::infinity();
+    m.velocity = 0.0;
+  } else {
+    m.mass = m1 + m2;
+    m.velocity = m1 * velocity / (m1 + m2);
+  }
+  return m;
 }
 
 }  // namespace bounce

@@ -24,7 +24,24 @@ struct CollideOptions {
   dynamics::IntegrationSettings integration;
   bool record_trajectory = false;
   int trajectory_points = 400;
+  /// krijt and jkr-viscoelastic: relative tolerance of the contact dynamics (scaled units).
+  double adhesive_tolerance = 1e-8;
+  /// krijt: the stiff engine (RODAS, or CVODE as an independent cross-check).
+  dynamics::StiffEngine stiff_engine = dynamics::StiffEngine::rodas;
+  /// krijt and jkr-viscoelastic: keep integrating a sticking collision until this
+  /// time [s] (to record how the grains settle); 0 stops when sticking is certain.
+  double follow_time = 0.0;
 };
+
+/// Sticking grains merge (BP04 §8.3.4, SPEC §4.1): one body of mass m1 + m2 moving,
+/// by momentum conservation, with m1 g / (m1 + m2) along the line of centres in the
+/// frame where body 2 rests before the impact (m_eff g / m2). A wall keeps the grain
+/// (infinite mass, velocity 0).
+struct MergedBody {
+  double mass = 0.0;      ///< [kg]; +inf with a wall
+  double velocity = 0.0;  ///< [m/s], frame of body 2 before the impact
+};
+MergedBody merged_body(const Pair& pair, double velocity);
 
 /// One head-on collision at impact speed `velocity` [m/s]: COR, outcome, contact
 /// time, maximum overlap, energy budget, warnings about validity (BSHP96 App. B).

@@ -1,0 +1,84 @@
+#include "bounce/analysis/sticking.hpp"
+
+#include <cmath>
+
+#include <boost/math/tools/roots.hpp>
+#include <fmt/format.h>
+
+#include "bounce/analytic/adhesive.hpp"
+#include "bounce/analytic/master_curve.hpp"
+#include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/core/error.hpp"
+
+namespace bounce {
+
+StickingVelocity sticking_velocity(const Pair& pair, const models::ModelSpec& model,
+                                   const CollideOptions& options, double relative_tolerance) {
+  if (!models::model_info(model.name).adhesive) {
+    throw InvalidArgument("model", model.name, "an adhesive model (adhesive-viscoelastic, jkr-viscoelastic, krijt)");
+  }
+  const double gamma = pair.require_surface_energy("the sticking velocity");
+  StickingVelocity s;
+  auto sticks = [&](double v) {
+    ++s.collisions;
+    return collide(pair, model, v, options).outcome == dynamics::Outcome::stick;
+  };
+  // Start from the elastic JKR threshold and bracket by factors of 2.
+  double v = analytic::sticking_velocity_jkr(pair.effective_mass(), pair.effective_radius(),
+                                             pair.effective_modulus(), gamma);
+  if (!(v > 0.0) || !std::isfinite(v)) throw NumericalError("no starting point for the sticking velocity");
+  // The quasi-static models hold for speeds well below the transversal sound speed
+  // (BSHP96 (B11)); beyond it the search has no meaning.
+  const auto sound = [](const Material& m) {
+    return std::sqrt(m.youngs_modulus / (2.0 * m.density * (1.0 + m.poisson_ratio)));  // BSHP96 (B3)
+  };
+  double c_t = sound(pair.body1().material);
+  if (!pair.body2().rigid) c_t = std::min(c_t, sound(pair.body2().material));
+  if (sticks(v)) {
+    s.lower = v;
+    s.upper = std::min(2.0 * v, c_t);
+    while (sticks(s.upper)) {
+      if (s.upper >= c_t) {
+        throw NumericalError(fmt::format(
+            "the grains stick at every speed up to the transversal sound speed c_t = {:.4g} m/s: no sticking "
+            "velocity within the quasi-static validity (BSHP96 (B11))", c_t));
+      }
+      s.lower = s.upper;
+      s.upper = std::min(2.0 * s.upper, c_t);
+    }
+  } else {
+    s.upper = v;
+    s.lower = 0.5 * v;
+    while (!sticks(s.lower)) {
+      s.upper = s.lower;
+      s.lower *= 0.5;
+      if (s.lower < 1e-8 * v) throw NumericalError(fmt::format("the grains still bounce at {:.3g} m/s", s.lower));
+    }
+  }
+  while (s.upper - s.lower > relative_tolerance * s.upper) {
+    const double mid = std::sqrt(s.lower * s.upper);
+    (sticks(mid) ? s.lower : s.upper) = mid;
+  }
+  s.velocity = std::sqrt(s.lower * s.upper);
+  return s;
+}
+
+double sticking_velocity_bp04(const Pair& pair, const models::ModelSpec& model) {  // BP04 (8.100)
+  const double gamma = pair.require_surface_energy("BP04's sticking velocity (8.100)");
+  const double w0 = analytic::tensile_work(pair.effective_radius(), pair.effective_modulus(), gamma);
+  const double m = pair.effective_mass();
+  const double g0 = std::sqrt(2.0 * w0 / m);
+  const double a = models::dissipative_constant(model, pair);
+  const double c0 = models::hertz_geometry(model, pair).force_constant;
+  // e(g) g increases with g (e falls like g^{-1/5} at most): one root above g0.
+  auto f = [&](double g) {
+    return analytic::master_cor(analytic::kappa(a, c0, m, g), dynamics::EndRule::overlap) * g - g0;
+  };
+  double hi = g0;
+  while (f(hi) < 0.0) hi *= 2.0;
+  std::uintmax_t iterations = 200;
+  const auto r = boost::math::tools::toms748_solve(f, g0, hi, boost::math::tools::eps_tolerance<double>(50), iterations);
+  return 0.5 * (r.first + r.second);
+}
+
+}  // namespace bounce
