@@ -34,9 +34,24 @@ TEST(CliAdhesive, CollideJson) {
   EXPECT_NEAR(j["closed_forms"]["sticking_velocity_k13_25"].get<double>(),
               j["closed_forms"]["sticking_velocity_jkr"].get<double>(), 1e-3);  // 14.18 vs 14.1844
   EXPECT_FALSE(j["warnings"].empty());  // K13 (A.2), (A.4) do not hold at T_vis = 1e-11 s
+  EXPECT_FALSE(j.contains("merged"));
   const auto stick = run_cli(k13("collide", {"--velocity", "1", "--json"}));
-  EXPECT_EQ(nlohmann::json::parse(stick.out)["outcome"], "stick");
-  EXPECT_EQ(nlohmann::json::parse(stick.out)["cor"], 0.0);
+  const auto s = nlohmann::json::parse(stick.out);
+  EXPECT_EQ(s["outcome"], "stick");
+  EXPECT_EQ(s["cor"], 0.0);
+  // Sticking grains merge: twice the mass; momentum m g = 2 m u, so u = g / 2.
+  const double m = s["pair"]["effective_mass"].get<double>() * 2.0;  // one sphere (m_eff = m / 2)
+  EXPECT_NEAR(s["merged"]["mass"].get<double>(), 2.0 * m, 1e-12 * m);
+  EXPECT_NEAR(s["merged"]["velocity"].get<double>(), 0.5, 1e-15);
+  // On a wall the grain stays.
+  const auto wall = run_cli(k13("collide", {"--velocity", "0.5", "--wall", "--json"}));
+  ASSERT_EQ(wall.exit_code, 0) << wall.err;
+  EXPECT_EQ(nlohmann::json::parse(wall.out)["merged"]["mass"], "wall");
+  EXPECT_EQ(nlohmann::json::parse(wall.out)["merged"]["velocity"], 0.0);
+  // Both stiff engines, same answer (their tolerance-limited errors are ~1e-9).
+  const auto cvode = run_cli(k13("collide", {"--velocity", "8", "--json", "--stiff-engine", "cvode"}));
+  ASSERT_EQ(cvode.exit_code, 0) << cvode.err;
+  EXPECT_NEAR(nlohmann::json::parse(cvode.out)["cor"].get<double>(), j["cor"].get<double>(), 1e-7);
 }
 
 TEST(CliAdhesive, TrajectoryAndFollow) {
@@ -75,6 +90,14 @@ TEST(CliAdhesive, Figure5Sweeps) {
   const auto sticking = run_cli(k13("sticking", {"--radii", "1e-6:1e-4:3", "--log"}));
   ASSERT_EQ(sticking.exit_code, 0) << sticking.err;
   EXPECT_EQ(count_lines(sticking.out), 4);
+  // With slow relaxation small grains stick at every speed below the sound speed: such a
+  // radius gets an empty value and the reason, the sweep goes on.
+  const auto beyond = run_cli({"sticking", "--material", "water-ice", "--model", "krijt", "--tvis", "1e-10",
+                               "--radii", "2e-7:2e-5:3", "--log"});
+  ASSERT_EQ(beyond.exit_code, 0) << beyond.err;
+  EXPECT_EQ(count_lines(beyond.out), 4);
+  EXPECT_NE(beyond.out.find(",,"), std::string::npos);
+  EXPECT_NE(beyond.out.find("sound speed"), std::string::npos);
 }
 
 TEST(CliAdhesive, BadInput) {
@@ -97,4 +120,5 @@ TEST(CliAdhesive, BadInput) {
   expect_rejected(k13("collide", {"--velocity", "1", "--method", "master"}), "--method", "master");
   expect_rejected({"sticking", "--material", "water-ice", "--radius", "2e-6", "--model", "viscoelastic", "--A", "1e-9"},
                   "--model", "viscoelastic");
+  expect_rejected(k13("collide", {"--velocity", "1", "--stiff-engine", "lsoda"}), "--stiff-engine", "lsoda");
 }

@@ -270,3 +270,22 @@ TEST(Krijt, PlasticLossesAdd) {
   EXPECT_GT(out.energy.plastic_dissipated, 0.0);
   EXPECT_LT(std::abs(fraction(out.energy.closure_error, out)), 1e-6);
 }
+
+// BP04 (8.99): a viscoelastic collision of adhesive grains warns when e g is not well
+// above sqrt(2 W0/m) (here 0.876 m/s for 2 um ice spheres), and stays silent far above
+// it or without a surface energy.
+TEST(AdhesionValidity, Bp04Condition) {
+  auto has_warning = [](const Pair& pair, double v) {
+    models::ModelSpec s;
+    s.dissipative_constant = 1e-10;
+    for (const auto& w : collide(pair, s, v).warnings) {
+      if (w.find("BP04 (8.99)") != std::string::npos) return true;
+    }
+    return false;
+  };
+  const Pair sticky = Pair::identical(ice(), 2e-6);
+  EXPECT_TRUE(has_warning(sticky, 1.0));
+  EXPECT_FALSE(has_warning(sticky, 10.0));
+  const Pair clean = Pair::identical(MaterialTable::builtin().at("ice-bshp96"), 2e-6);
+  EXPECT_FALSE(has_warning(clean, 1.0));
+}
