@@ -10,3 +10,5 @@ for b in "$build_dir"/bin/bench_*; do
 done
 echo "== viscoelastic collision against scipy"
 /usr/bin/python3 bench/viscoelastic_vs_scipy.py "$build_dir"
+echo "== K13 collisions against scipy, and the two stiff engines"
+/usr/bin/python3 bench/adhesive_vs_scipy.py "$build_dir"
