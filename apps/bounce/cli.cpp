@@ -65,6 +65,8 @@ BodyOptions::BodyOptions(CLI::App* app) : app_(app), numbers_(app) {
   numbers_.add("--density2", "body 2 density [kg/m^3]");
   numbers_.add("--gamma2", "body 2 surface energy [J/m^2]");
   numbers_.add("--radius2", "body 2 radius [m] (default: body 1's)");
+  numbers_.add("--inertia", "body 1 moment of inertia J/(m R^2) (default 2/5, a solid sphere; BSHP96 (4))");
+  numbers_.add("--inertia2", "body 2 moment of inertia J/(m R^2) (default 2/5)");
   app->add_flag("--wall", wall_, "body 2 is a flat elastic wall (of body 2's material)");
   app->add_flag("--rigid-wall", rigid_wall_, "body 2 is a flat, ideally rigid wall");
   app->add_option("--materials-file", materials_file_,
@@ -121,15 +123,18 @@ Pair BodyOptions::pair(std::optional<double> radius) const {
   const Material m2 = resolve_material(materials, true, m1);
   const double radius1 = radius ? *radius : numbers_.require("--radius", "a radius > 0 m for body 1");
   Body b1 = sphere(m1, radius1);
+  if (auto j = numbers_.get("--inertia")) b1.inertia_factor = *j;
   Body b2;
   if (wall_ || rigid_wall_) {
-    if (numbers_.given("--radius2")) {
-      throw InvalidArgument("--radius2", numbers_.text("--radius2"),
-                            "no --radius2 with --wall/--rigid-wall");
+    for (const char* option : {"--radius2", "--inertia2"}) {
+      if (numbers_.given(option)) {
+        throw InvalidArgument(option, numbers_.text(option), fmt::format("no {} with --wall/--rigid-wall", option));
+      }
     }
     b2 = rigid_wall_ ? rigid_wall(m2) : wall(m2);
   } else {
     b2 = sphere(m2, numbers_.get("--radius2").value_or(radius1));
+    b2.inertia_factor = numbers_.get("--inertia2").value_or(b1.inertia_factor);
   }
   try {
     return Pair(b1, b2);
@@ -172,7 +177,8 @@ std::string option_name(const std::string& parameter) {
   static const std::regex plain(R"(^[A-Za-z][A-Za-z0-9_]*$)");
   std::smatch match;
   if (std::regex_match(parameter, match, body)) {
-    return "--" + match[2].str() + (match[1] == "2" ? "2" : "");
+    const std::string field = match[2].str() == "inertia_factor" ? "inertia" : match[2].str();
+    return "--" + field + (match[1] == "2" ? "2" : "");
   }
   if (std::regex_match(parameter, plain)) {
     std::string out = "--" + parameter;
@@ -312,6 +318,13 @@ ModelOptions::ModelOptions(CLI::App* app, NumberOptions& numbers) : numbers_(num
   numbers_.add("--power-d1", "power-law D1 [m^{1-alpha}/s^2]");
   numbers_.add("--power-alpha", "power-law elastic exponent alpha (default 1.5)");
   numbers_.add("--power-d2", "power-law D2 [m^{1-gamma-beta} s^{beta-2}]");
+  numbers_.add("--tangential-velocity", "tangential impact velocity g^T [m/s]: an oblique collision (BSHP96 §II B)");
+  app->add_option("--tangential-law", tangential_law_, "asperity (BSHP96 (35), default) | step (BSHP96 (39))");
+  app->add_option("--asperity-form", asperity_form_,
+                  "published (BSHP96 (35), default) | passive (no energy from the changing stiffness)");
+  numbers_.add("--friction", "friction coefficient mu (BSHP96 (36))");
+  numbers_.add("--asperity", "asperity size zeta0 [m] (BSHP96 (32); asperity law)");
+  numbers_.add("--shear-damping", "gamma_s [1/s] (BSHP96 (39); step law)");
   numbers_.add("--power-beta", "power-law rate exponent beta (default 1)");
   numbers_.add("--power-gamma", "power-law overlap exponent gamma of the dissipative term (default 0.5)");
 }
@@ -335,6 +348,15 @@ models::ModelSpec ModelOptions::spec() const {
   s.k = numbers_.get("--k").value_or(0.02);
   s.dissipative_constant_b = numbers_.get("--B");
   s.yield_strength = numbers_.get("--yield");
+  try {
+    s.tangential_law = dynamics::parse_tangential_law(tangential_law_);
+    s.asperity_form = dynamics::parse_asperity_form(asperity_form_);
+  } catch (const InvalidArgument& e) {
+    throw e.renamed(option_name(e.parameter()));
+  }
+  s.friction = numbers_.get("--friction");
+  s.asperity_size = numbers_.get("--asperity");
+  s.shear_damping = numbers_.get("--shear-damping");
   if (s.name == "power-law") {
     models::PowerLawParameters p;
     p.d1 = numbers_.require("--power-d1", "D1 > 0 for the power-law model");
@@ -358,6 +380,9 @@ CollideOptions ModelOptions::collide_options() const {
     o.stiff_engine = dynamics::StiffEngine::cvode;
   } else if (stiff_engine_ != "rodas") {
     throw InvalidArgument("--stiff-engine", stiff_engine_, "rodas or cvode");
+  }
+  if (auto g = numbers_.get("--tangential-velocity")) {
+    o.tangential_velocity = require_positive("tangential_velocity", *g, "a tangential velocity > 0 m/s");
   }
   return o;
 }
@@ -410,6 +435,19 @@ nlohmann::json outcome_json(const dynamics::CollisionOutcome& o, bool with_traje
                  {"bulk_dissipated", e.bulk_dissipated},     {"crack_dissipated", e.crack_dissipated},
                  {"plastic_dissipated", e.plastic_dissipated}, {"elastic_remaining", e.elastic_remaining},
                  {"surface_remaining", e.surface_remaining}, {"closure_error", e.closure_error}};
+  if (o.tangential) {
+    const auto& t = *o.tangential;
+    j["cor_tangential"] = t.cor;
+    j["tangential"] = {{"cor", t.cor},
+                       {"initial_kinetic", t.initial_kinetic},
+                       {"final_kinetic", t.final_kinetic},
+                       {"asperity_dissipated", t.asperity_dissipated},
+                       {"stored_at_end", t.stored_at_end},
+                       {"stiffness_work", t.stiffness_work},
+                       {"breaks", t.breaks},
+                       {"averaged_time", t.averaged_time},
+                       {"steps", t.steps}};
+  }
   j["warnings"] = o.warnings;
   j["notes"] = o.notes;
   if (with_trajectory) {

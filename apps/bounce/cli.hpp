@@ -87,6 +87,8 @@ class ModelOptions {
   double tolerance_ = 1e-12;
   double adhesive_tolerance_ = 1e-8;
   std::string stiff_engine_ = "rodas";
+  std::string tangential_law_ = "asperity";
+  std::string asperity_form_ = "published";
 };
 
 /// K13's and BP04's closed forms for an adhesive collision at `velocity` (JSON):

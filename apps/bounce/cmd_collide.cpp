@@ -99,6 +99,14 @@ int run_collide(const CollideCommand& c) {
   }
   std::cout << fmt::format("cor          e   = {:.12g}\noutcome          = {}\n", outcome.cor,
                            dynamics::to_string(outcome.outcome));
+  if (outcome.tangential) {
+    const auto& t = *outcome.tangential;
+    std::cout << fmt::format(
+        "tangential   e^T = {:.12g} ({} asperity breaks resolved, {:.3g} s averaged; energy [J]: initial {:.6g}, "
+        "final {:.6g}, asperities {:.6g}, left {:.6g}, from the stiffness change {:.6g})\n",
+        t.cor, t.breaks, t.averaged_time, t.initial_kinetic, t.final_kinetic, t.asperity_dissipated, t.stored_at_end,
+        t.stiffness_work);
+  }
   std::cout << fmt::format("contact time t_c = {:.6g} s{}\nmax overlap      = {:.6g} m\n", outcome.contact_time,
                            outcome.outcome == dynamics::Outcome::stick ? " (when sticking became certain)" : "",
                            outcome.max_overlap);

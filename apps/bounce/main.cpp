@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "bounce 0.1.0");
   std::vector<Command> commands = {add_materials_command(app), add_contact_command(app),
                                   add_collide_command(app),   add_curve_command(app),
-                                  add_analytic_command(app),  add_sticking_command(app)};
+                                  add_analytic_command(app),  add_sticking_command(app),
+                                  add_rules_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

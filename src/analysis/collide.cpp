@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -123,6 +124,29 @@ void add_adhesion_validity_warning(dynamics::CollisionOutcome& out, const Pair& 
                                        : "adhesion is not negligible, use an adhesive model"));
 }
 
+// BSHP96 states -1 <= eps^T <= 1; the published asperity law can leave that range by
+// the energy its spring gains from the changing stiffness (SPEC §5, docs/tangential.md).
+void add_tangential_warnings(dynamics::CollisionOutcome& out) {
+  if (!out.tangential || std::abs(out.tangential->cor) <= 1.0) return;
+  out.warnings.push_back(fmt::format(
+      "|eps^T| = {:.4g} > 1: the published asperity law's spring gained {:.3g} J from its changing stiffness "
+      "(BSHP96's bound -1 <= eps^T <= 1 fails; --asperity-form passive cannot gain energy)",
+      std::abs(out.tangential->cor), out.tangential->stiffness_work));
+}
+
+// The tangential motion of an oblique collision of a dynamic-contact model, driven by
+// the recorded normal force.
+void add_tangential(dynamics::CollisionOutcome& out, const Pair& pair, const dynamics::TangentialModel& model,
+                    const CollideOptions& options) {
+  if (out.outcome != dynamics::Outcome::bounce) {
+    out.notes.push_back("the grains stick: no tangential restitution");
+    return;
+  }
+  out.tangential = dynamics::integrate_tangential_motion(out.trajectory, pair.effective_mass(),
+                                                         options.tangential_velocity, model, options.integration);
+  out.notes.push_back("tangential motion driven by the recorded F^N(t) (monotone cubic interpolation)");
+}
+
 // K13 (28)-(30): plastic losses added to any model when a yield strength is given.
 void add_plastic_losses(dynamics::CollisionOutcome& out, const Pair& pair, double velocity, double yield) {
   require_positive("yield", yield, "yield strength Y [Pa]");
@@ -196,11 +220,14 @@ dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& sp
       throw InvalidArgument("contact_end", "force", fmt::format("overlap for model {} (its contact ends when the crack runs away)", spec.name));
     }
     const models::KrijtParameters p = models::krijt_parameters(spec, pair);
+    const bool oblique = options.tangential_velocity > 0.0;
+    const auto tangential = oblique ? std::optional(models::tangential_model(spec, pair)) : std::nullopt;
     dynamics::AdhesiveCollisionOptions o;
     o.relative_tolerance = options.adhesive_tolerance;
     o.engine = options.stiff_engine;
-    o.record_trajectory = options.record_trajectory;
-    o.trajectory_points = options.trajectory_points;
+    // An oblique collision drives its tangential motion with the recorded F^N(t).
+    o.record_trajectory = options.record_trajectory || oblique;
+    o.trajectory_points = oblique ? std::max(options.trajectory_points, 4000) : options.trajectory_points;
     o.follow_time = options.follow_time;
     o.max_steps = std::min(options.integration.max_steps, o.max_steps);
     const double hysteresis = models::krijt_hysteresis_estimate(p, velocity);
@@ -214,9 +241,14 @@ dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& sp
           "error: integrated as the fast-crack limit jkr-viscoelastic (singular-perturbation reduction)",
           hysteresis));
     }
+    if (oblique) {
+      add_tangential(out, pair, *tangential, options);
+      if (!options.record_trajectory) out.trajectory.clear();
+    }
     if (spec.yield_strength) add_plastic_losses(out, pair, velocity, *spec.yield_strength);
     add_validity_warnings(out, pair, velocity, viscous_time_scale(spec, pair));
     add_adhesive_warnings(out, spec, pair);
+    add_tangential_warnings(out);
     return out;
   }
   const auto force = models::make_normal_force(spec, pair);  // validates the model
@@ -239,7 +271,28 @@ dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& sp
       break;
   }
   dynamics::CollisionOutcome out;
-  if (use_master) {
+  if (options.tangential_velocity > 0.0 && options.method == Method::master) {
+    throw InvalidArgument("method", "master", "integrate or auto for an oblique collision (it is integrated)");
+  }
+  if (options.tangential_velocity > 0.0) {  // oblique: normal and tangential motion together
+    const dynamics::TangentialModel tangential = models::tangential_model(spec, pair);
+    dynamics::NormalCollisionOptions o;
+    o.end_rule = spec.end_rule;
+    o.integration = options.integration;
+    auto both = dynamics::integrate_tangential_collision(*force, pair.effective_mass(), velocity,
+                                                         options.tangential_velocity, tangential, o);
+    out = std::move(both.normal);
+    if (out.outcome == dynamics::Outcome::bounce) {
+      out.tangential = both.tangential;
+    } else {
+      out.notes.push_back("the grains stick: no tangential restitution");
+    }
+    if (options.record_trajectory) {  // the normal motion does not feel F^T
+      o.record_trajectory = true;
+      o.trajectory_points = options.trajectory_points;
+      out.trajectory = dynamics::integrate_normal_collision(*force, pair.effective_mass(), velocity, o).trajectory;
+    }
+  } else if (use_master) {
     out = from_master(spec, pair, velocity);
   } else {
     dynamics::NormalCollisionOptions o;
@@ -253,6 +306,7 @@ dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& sp
   add_validity_warnings(out, pair, velocity, viscous_time_scale(spec, pair));
   if (info.adhesive) add_adhesive_warnings(out, spec, pair);
   if (spec.name != "power-law") add_adhesion_validity_warning(out, pair, velocity, spec.name);
+  add_tangential_warnings(out);
   return out;
 }
 

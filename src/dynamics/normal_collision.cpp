@@ -6,6 +6,7 @@
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "event_integrator.hpp"
+#include "normal_system.hpp"
 
 namespace bounce::dynamics {
 
@@ -14,20 +15,8 @@ namespace {
 using State = detail::State<3>;  // x = xi/xi0, v = xi'/g, dissipated work / (m g^2)
 
 struct ScaledSystem {
-  const models::NormalForceModel* model;
-  double xi0;
-  double speed;
-  double force_to_acceleration;  // xi0 / (m g^2): scaled acceleration per newton
-
-  void operator()(const State& y, State& dydt, double /*t*/) const {
-    const double xi = xi0 * y[0];
-    const double rate = speed * y[1];
-    const double total = model->force(xi, rate);
-    const double elastic = model->elastic_force(xi);
-    dydt[0] = y[1];
-    dydt[1] = -total * force_to_acceleration;
-    dydt[2] = (total - elastic) * y[1] * force_to_acceleration;  // dissipative power >= 0
-  }
+  detail::NormalScaled normal;
+  void operator()(const State& y, State& dydt, double /*t*/) const { normal(y, dydt); }
 };
 
 }  // namespace
@@ -40,44 +29,11 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
   const double xi0 = model.reference_overlap(speed);
   const double time_unit = xi0 / speed;
   const double energy_unit = effective_mass * speed * speed;
-  const ScaledSystem system{&model, xi0, speed, xi0 / energy_unit};
+  const ScaledSystem system{{&model, xi0, speed, xi0 / energy_unit}};
 
   const double cutoff = model.cutoff_overlap(speed) / xi0;  // 0 unless the force is singular at contact
-  std::vector<detail::Event<3>> events(4);
-  // 0: maximum compression (xi' falls through zero); arms the end-of-contact event.
-  events[0].g = [](double, const State& y) { return y[1]; };
-  events[0].direction = -1;
-  events[0].terminal = false;
-  events[0].arms = 1;
-  // 1: end of contact.
-  if (options.end_rule == EndRule::overlap) {
-    events[1].g = [cutoff](double, const State& y) { return y[0] - cutoff; };
-  } else {
-    events[1].g = [&](double, const State& y) {
-      return model.force_sign(xi0 * y[0], speed * y[1]);
-    };
-  }
-  events[1].direction = -1;
-  events[1].terminal = true;
-  events[1].armed = false;
-  // 2: under the force rule the contact ends at the latest when the overlap returns to 0.
-  events[2].g = [](double, const State& y) { return y[0]; };
-  events[2].direction = -1;
-  events[2].terminal = true;
-  events[2].armed = options.end_rule == EndRule::force;
-  // 3: adhesive laws: the mechanical energy (1/2) xi'^2 + U(xi)/m never increases and
-  // must be >= 0 at separation (U(0) = 0): once negative, the grains stick.
-  auto mechanical = [&](const State& y) {
-    return 0.5 * y[1] * y[1] + model.elastic_energy(xi0 * y[0]) / energy_unit;
-  };
-  events[3].g = [&](double, const State& y) { return mechanical(y); };
-  events[3].direction = -1;
-  events[3].terminal = true;
-  events[3].armed = model.adhesive();
-  if (model.adhesive() && options.end_rule == EndRule::force) {
-    throw InvalidArgument("contact_end", "force",
-                          "overlap for adhesive models (their contact ends when the overlap returns to 0)");
-  }
+  std::vector<detail::Event<3>> events =
+      detail::normal_events<3>(model, options.end_rule, cutoff, xi0, speed, energy_unit);
 
   CollisionOutcome out;
   out.method = "integrate";
@@ -114,28 +70,20 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
   if (options.record_trajectory) sample(result.terminal.time, end);
 
   out.steps = result.steps;
-  const bool stuck = result.terminal.index == 3;
-  out.cor = stuck ? 0.0 : -end[1];
-  out.outcome = stuck ? Outcome::stick : Outcome::bounce;
-  out.contact_time = result.terminal.time * time_unit;
+  detail::NormalEnd normal_end;
+  normal_end.time = result.terminal.time;
+  normal_end.x = end[0];
+  normal_end.v = end[1];
+  normal_end.dissipated = end[2];
+  normal_end.stuck = result.terminal.index == 3;
   for (const auto& hit : result.hits) {
     if (hit.index == 0) {
-      out.max_overlap = hit.state[0] * xi0;
-      out.time_of_max_overlap = hit.time * time_unit;
+      normal_end.compressed = true;
+      normal_end.max_overlap = hit.state[0];
+      normal_end.max_overlap_time = hit.time;
     }
   }
-  if (stuck && result.hits.empty()) {  // sticking certain while still compressing
-    out.max_overlap = end[0] * xi0;
-    out.time_of_max_overlap = out.contact_time;
-    out.notes.push_back(
-        "sticking was certain before the maximum compression: max_overlap is the overlap at that time");
-  }
-  EnergyBudget& e = out.energy;
-  e.initial_kinetic = 0.5 * energy_unit;
-  e.final_kinetic = 0.5 * energy_unit * end[1] * end[1];
-  e.bulk_dissipated = end[2] * energy_unit;
-  e.elastic_remaining = model.elastic_energy(xi0 * end[0]);
-  e.closure_error = e.initial_kinetic - e.final_kinetic - e.bulk_dissipated - e.elastic_remaining;
+  detail::finish_normal_outcome(out, normal_end, model, xi0, time_unit, energy_unit);
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include "bounce/dynamics/integration.hpp"
 #include "bounce/dynamics/outcome.hpp"
+#include "bounce/dynamics/tangential.hpp"
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/pair.hpp"
 
@@ -28,6 +29,9 @@ struct CollideOptions {
   double adhesive_tolerance = 1e-8;
   /// krijt: the stiff engine (RODAS, or CVODE as an independent cross-check).
   dynamics::StiffEngine stiff_engine = dynamics::StiffEngine::rodas;
+  /// g^T [m/s]: > 0 makes the collision oblique; the outcome then has `tangential`
+  /// (the model's tangential law, models::tangential_model; docs/tangential.md).
+  double tangential_velocity = 0.0;
   /// krijt and jkr-viscoelastic: keep integrating a sticking collision until this
   /// time [s] (to record how the grains settle); 0 stops when sticking is certain.
   double follow_time = 0.0;

@@ -2,6 +2,7 @@
 // What a collision produces: restitution, outcome, times, energy budget and,
 // on request, the trajectory. SI units.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +51,24 @@ struct TrajectorySample {
   double crack_dissipated = 0.0;   ///< U_CD so far [J]
 };
 
+/// The tangential part of an oblique collision (dynamics/tangential.hpp). Energies in
+/// J; the tangential kinetic energy is (1/2) m_eff kappa (g^T)^2 (BSHP96 (11)).
+struct TangentialOutcome {
+  double cor = 1.0;                  ///< eps^T = g^T' / g^T, BSHP96 (2), (38); -1 <= eps^T <= 1 in BSHP96
+  double initial_kinetic = 0.0;      ///< (1/2) m_eff kappa (g^T)^2
+  double final_kinetic = 0.0;        ///< (1/2) m_eff kappa (eps^T g^T)^2
+  double asperity_dissipated = 0.0;  ///< energy of the broken asperities (and the sliding in averaged mode)
+  double stored_at_end = 0.0;        ///< elastic energy left in the asperity spring at separation (lost)
+  /// final + asperity_dissipated + stored_at_end - initial: energy the asperity spring
+  /// gained (> 0) or lost because its stiffness mu F^N / zeta0 followed F^N(t) with the
+  /// extension held (the published form); 0 for the passive form and the step law up
+  /// to the integration error.
+  double stiffness_work = 0.0;
+  long breaks = 0;                   ///< asperity breaks resolved one by one
+  double averaged_time = 0.0;        ///< time spent with the sawtooth averaged (dense breaking) [s]
+  long steps = 0;
+};
+
 struct CollisionOutcome {
   double cor = 0.0;                  ///< coefficient of normal restitution (0 when sticking)
   Outcome outcome = Outcome::bounce;
@@ -62,6 +81,7 @@ struct CollisionOutcome {
   std::vector<std::string> notes;            ///< how the result was obtained, when not obvious
   std::string method;                        ///< "integrate", "master" or "closed-form"
   long steps = 0;                            ///< integration steps taken (0 for master)
+  std::optional<TangentialOutcome> tangential;  ///< with a tangential velocity (and a bounce)
 };
 
 }  // namespace bounce::dynamics

@@ -12,6 +12,7 @@
 
 #include "bounce/contact/convex.hpp"
 #include "bounce/dynamics/outcome.hpp"
+#include "bounce/dynamics/tangential.hpp"
 #include "bounce/models/krijt.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "bounce/pair/pair.hpp"
@@ -33,6 +34,12 @@ struct ModelSpec {
   double k = 0.02;                        ///< relaxed / instantaneous modulus (krijt), 0 < k < 1
   std::optional<double> dissipative_constant_b;  ///< B [s] of BP04 (8.57) (adhesive-viscoelastic)
   std::optional<double> yield_strength;   ///< Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)
+  // Oblique collisions (docs/tangential.md): the tangential force law.
+  dynamics::TangentialLaw tangential_law = dynamics::TangentialLaw::asperity;
+  dynamics::AsperityForm asperity_form = dynamics::AsperityForm::published;
+  std::optional<double> friction;        ///< mu, BSHP96 (35)-(36)
+  std::optional<double> asperity_size;   ///< zeta0 [m], BSHP96 (32)
+  std::optional<double> shear_damping;   ///< gamma_s [1/s], BSHP96 (39)
 };
 
 struct ModelInfo {
@@ -61,6 +68,11 @@ HertzGeometry hertz_geometry(const ModelSpec& spec, const Pair& pair);
 /// The force law of `spec` for `pair` (validates every parameter); not for the
 /// dynamic-contact models (krijt, jkr-viscoelastic), see krijt_parameters.
 std::unique_ptr<NormalForceModel> make_normal_force(const ModelSpec& spec, const Pair& pair);
+
+/// The tangential force law of `spec` for `pair` (kappa of BSHP96 (8) from the pair's
+/// moments of inertia), validated: the asperity law needs mu and zeta0, the step law
+/// mu and gamma_s (InvalidArgument names the missing or bad one).
+dynamics::TangentialModel tangential_model(const ModelSpec& spec, const Pair& pair);
 
 /// Parameters of K13's model for this pair: gamma of the pair, T_vis, A (given or
 /// T_vis/nu^2), z0 and k, all validated. `jkr-viscoelastic` needs only A (or T_vis).

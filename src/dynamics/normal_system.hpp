@@ -1,0 +1,108 @@
+#pragma once
+// Private: the normal collision in the scaled units of BP04 (8.66), shared by the
+// head-on (normal_collision.cpp) and the oblique (tangential_collision.cpp)
+// integrations. The first three state components are x = xi/xi0, v = xi'/g and the
+// dissipated work / (m g^2); an oblique collision appends its tangential ones.
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "bounce/core/error.hpp"
+#include "bounce/dynamics/normal_collision.hpp"
+#include "event_integrator.hpp"
+
+namespace bounce::dynamics::detail {
+
+struct NormalScaled {
+  const models::NormalForceModel* model;
+  double xi0;
+  double speed;
+  double force_to_acceleration;  // xi0 / (m g^2): scaled acceleration per newton
+
+  /// d/dt of components 0-2; returns the scaled normal force f = -x'' (>= 0: repulsive).
+  template <std::size_t N>
+  double operator()(const State<N>& y, State<N>& dydt) const {
+    const double xi = xi0 * y[0];
+    const double rate = speed * y[1];
+    const double total = model->force(xi, rate);
+    const double elastic = model->elastic_force(xi);
+    const double f = total * force_to_acceleration;
+    dydt[0] = y[1];
+    dydt[1] = -f;
+    dydt[2] = (total - elastic) * y[1] * force_to_acceleration;  // dissipative power >= 0
+    return f;
+  }
+};
+
+/// Events 0-3 of a normal collision: 0 maximum compression (arms 1), 1 the end of
+/// contact under `rule`, 2 under the force rule the overlap returning to 0, 3 for
+/// adhesive laws the mechanical energy turning negative (the grains stick).
+template <std::size_t N>
+std::vector<Event<N>> normal_events(const models::NormalForceModel& model, EndRule rule, double cutoff, double xi0,
+                                    double speed, double energy_unit) {
+  if (model.adhesive() && rule == EndRule::force) {
+    throw InvalidArgument("contact_end", "force",
+                          "overlap for adhesive models (their contact ends when the overlap returns to 0)");
+  }
+  std::vector<Event<N>> events(4);
+  events[0].g = [](double, const State<N>& y) { return y[1]; };
+  events[0].direction = -1;
+  events[0].terminal = false;
+  events[0].arms = 1;
+  if (rule == EndRule::overlap) {
+    events[1].g = [cutoff](double, const State<N>& y) { return y[0] - cutoff; };
+  } else {
+    events[1].g = [&model, xi0, speed](double, const State<N>& y) {
+      return model.force_sign(xi0 * y[0], speed * y[1]);
+    };
+  }
+  events[1].direction = -1;
+  events[1].terminal = true;
+  events[1].armed = false;
+  events[2].g = [](double, const State<N>& y) { return y[0]; };
+  events[2].direction = -1;
+  events[2].terminal = true;
+  events[2].armed = rule == EndRule::force;
+  // (1/2) xi'^2 + U(xi)/m never increases and must be >= 0 at separation (U(0) = 0).
+  events[3].g = [&model, xi0, energy_unit](double, const State<N>& y) {
+    return 0.5 * y[1] * y[1] + model.elastic_energy(xi0 * y[0]) / energy_unit;
+  };
+  events[3].direction = -1;
+  events[3].terminal = true;
+  events[3].armed = model.adhesive();
+  return events;
+}
+
+/// The normal outcome from the end state of the first three components.
+struct NormalEnd {
+  double time = 0.0;           ///< scaled
+  double x = 0.0, v = 0.0, dissipated = 0.0;
+  bool stuck = false;
+  bool compressed = false;     ///< the maximum compression was reached
+  double max_overlap_time = 0.0, max_overlap = 0.0;  ///< scaled
+};
+
+inline void finish_normal_outcome(CollisionOutcome& out, const NormalEnd& end, const models::NormalForceModel& model,
+                                  double xi0, double time_unit, double energy_unit) {
+  out.cor = end.stuck ? 0.0 : -end.v;
+  out.outcome = end.stuck ? Outcome::stick : Outcome::bounce;
+  out.contact_time = end.time * time_unit;
+  if (end.compressed) {
+    out.max_overlap = end.max_overlap * xi0;
+    out.time_of_max_overlap = end.max_overlap_time * time_unit;
+  } else if (end.stuck) {  // sticking certain while still compressing
+    out.max_overlap = end.x * xi0;
+    out.time_of_max_overlap = out.contact_time;
+    out.notes.push_back(
+        "sticking was certain before the maximum compression: max_overlap is the overlap at that time");
+  }
+  EnergyBudget& e = out.energy;
+  e.initial_kinetic = 0.5 * energy_unit;
+  e.final_kinetic = 0.5 * energy_unit * end.v * end.v;
+  e.bulk_dissipated = end.dissipated * energy_unit;
+  e.elastic_remaining = model.elastic_energy(xi0 * end.x);
+  e.closure_error = e.initial_kinetic - e.final_kinetic - e.bulk_dissipated - e.elastic_remaining;
+}
+
+}  // namespace bounce::dynamics::detail

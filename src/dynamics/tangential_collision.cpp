@@ -1,0 +1,368 @@
+#include "bounce/dynamics/tangential.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+// Boost 1.74's pchip.hpp calls isnan unqualified; it must be visible where the header
+// is read (fixed in later Boost releases).
+using std::isnan;
+#include <boost/math/interpolators/pchip.hpp>
+#include <fmt/format.h>
+
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+#include "event_integrator.hpp"
+#include "normal_system.hpp"
+
+namespace bounce::dynamics {
+
+std::string_view to_string(TangentialLaw law) { return law == TangentialLaw::asperity ? "asperity" : "step"; }
+std::string_view to_string(AsperityForm form) { return form == AsperityForm::published ? "published" : "passive"; }
+
+TangentialLaw parse_tangential_law(std::string_view text) {
+  if (text == "asperity") return TangentialLaw::asperity;
+  if (text == "step") return TangentialLaw::step;
+  throw InvalidArgument("tangential_law", std::string(text), "asperity (BSHP96 (35)) or step (BSHP96 (39))");
+}
+
+AsperityForm parse_asperity_form(std::string_view text) {
+  if (text == "published") return AsperityForm::published;
+  if (text == "passive") return AsperityForm::passive;
+  throw InvalidArgument("asperity_form", std::string(text), "published or passive");
+}
+
+void validate(const TangentialModel& m) {
+  require_non_negative("friction", m.friction, "friction coefficient mu");
+  if (!(m.dense_breaks > 0.0)) {  // +inf resolves every break
+    throw InvalidArgument("dense_breaks", fmt::format("{:g}", m.dense_breaks), "breaks per time unit > 0 (or inf)");
+  }
+  require_positive("kappa", m.kappa, "tangential mass factor kappa of BSHP96 (8), 0 < kappa <= 1");
+  if (m.kappa > 1.0) throw InvalidArgument("kappa", fmt::format("{:g}", m.kappa), "0 < kappa <= 1 (BSHP96 (8))");
+  if (m.law == TangentialLaw::asperity) {
+    require_positive("asperity", m.asperity_size, "asperity size zeta0 [m] (BSHP96 (32))");
+  } else {
+    require_non_negative("shear_damping", m.shear_damping, "shear damping gamma_s [1/s] (BSHP96 (39))");
+  }
+}
+
+namespace {
+
+enum class Mode { resolved, averaged };
+
+// Largest relative change of the sliding speed over one sawtooth period for which the
+// sawtooth is averaged (the averaging error is of second order in it).
+constexpr double dense_change = 1e-3;
+
+// The tangential motion in scaled units: z' = zeta'/g^T, time unit t_u, normal force
+// f = F^N t_u / (m g^N); energies in units of (1/2) m kappa (g^T)^2. The spring state q is
+// the extension (zeta - zeta_a)/zeta0 (published form) or w = u / (sqrt(m kappa) g^T)
+// with E_s = u^2/2 (passive form).
+struct TangentialScaled {
+  TangentialModel m;
+  double ratio = 1.0;     // g^N / g^T
+  double lambda_t = 0.0;  // g^T t_u / zeta0: asperity lengths slid per time unit at speed g^T
+  double lambda_n = 0.0;  // g^N t_u / zeta0
+  double gamma_t = 0.0;   // gamma_s t_u
+  Mode mode = Mode::resolved;
+
+  // Asperity breaks per time unit while sliding at z'.
+  double breaks_per_time(double zp) const { return lambda_t * std::abs(zp); }
+  // Relative change of the sliding speed over one sawtooth period (mean force).
+  double change_per_period(double f, double zp) const {
+    return 0.5 * m.friction * std::max(f, 0.0) * ratio / (m.kappa * lambda_t * zp * zp);
+  }
+  bool averaging_holds(double f, double zp) const {
+    return breaks_per_time(zp) > m.dense_breaks && change_per_period(f, zp) < dense_change;
+  }
+  // Angular frequency of the asperity spring, sqrt(k / (m kappa)) t_u, k = mu F^N / zeta0.
+  double omega(double f) const { return std::sqrt(m.friction * std::max(f, 0.0) * lambda_n / m.kappa); }
+
+  // d/dt of (z', q, D), D the dissipated energy. BSHP96 (10) with (35), (39).
+  void operator()(double f, double zp, double q, double& dzp, double& dq, double& dd) const {
+    f = std::max(f, 0.0);  // no shear in tension
+    dq = 0.0;
+    if (m.law == TangentialLaw::step) {  // (39)
+      const double magnitude = std::min(gamma_t * std::abs(zp), m.friction * f * ratio) / m.kappa;
+      dzp = -std::copysign(magnitude, zp);
+      dd = -2.0 * zp * dzp;
+      return;
+    }
+    if (mode == Mode::averaged) {  // the sawtooth's mean: sliding at mu F^N / 2
+      dzp = -std::copysign(0.5 * m.friction * f * ratio / m.kappa, zp);
+      dq = lambda_t * zp;  // q: the slip in asperity lengths, whose fraction is the phase
+      dd = -2.0 * zp * dzp;
+      return;
+    }
+    dd = 0.0;
+    if (m.form == AsperityForm::published) {  // (35) with the anchor: F^T = -mu F^N q
+      dzp = -m.friction * f * ratio * q / m.kappa;
+      dq = lambda_t * zp;
+    } else {  // F^T = sqrt(k) u, u' = -sqrt(k) zeta': a rotation of (z', w) at rate omega
+      const double w = omega(f);
+      dzp = w * q;
+      dq = -w * zp;
+    }
+  }
+  // Energy stored in the asperity spring (scaled).
+  double stored(double f, double q) const {
+    if (m.law == TangentialLaw::step || mode == Mode::averaged) return 0.0;
+    if (m.form == AsperityForm::published) {
+      const double w = omega(f) / lambda_t;
+      return w * w * q * q;
+    }
+    return q * q;
+  }
+  // > 0 while the asperity holds; 0 where |F^T| = mu F^N (it breaks).
+  double hold(double f, double q) const {
+    return m.form == AsperityForm::published ? 1.0 - std::abs(q) : omega(f) / lambda_t - std::abs(q);
+  }
+};
+
+// Bookkeeping of one oblique collision across the restarts at breaks and mode changes.
+struct TangentialRun {
+  TangentialScaled c;
+  double zp = 1.0, q = 0.0, d = 0.0;
+  long breaks = 0;
+  double averaged_time = 0.0;  // scaled
+  bool asperity() const { return c.m.law == TangentialLaw::asperity; }
+  // A break: the stored energy is lost, a fresh asperity takes over.
+  void on_break(double f) {
+    d += c.stored(f, q);
+    q = 0.0;
+    ++breaks;
+  }
+  // Into averaged mode q becomes the slip since the anchor in asperity lengths; out of
+  // it the sawtooth resumes at the phase phi that slip gives. Over whole periods the mean
+  // force gives the sawtooth's impulse; over the partial periods at either end it does
+  // not, by mu F^N zeta0 phi (1 - phi) / (2 v): z' is corrected by that impulse on entry
+  // and exit (at constant speed over the partial period; what remains is second order).
+  void switch_mode(double f) {
+    const double omega_ratio = c.omega(f) / c.lambda_t;  // |w| at the Coulomb limit (passive form)
+    auto partial_period = [&](double phi) {
+      return std::copysign(c.m.friction * std::max(f, 0.0) * c.ratio * phi * (1.0 - phi) /
+                               (2.0 * c.m.kappa * c.lambda_t * std::abs(zp)),
+                           zp);
+    };
+    if (c.mode == Mode::resolved) {
+      if (c.m.form == AsperityForm::passive) q = omega_ratio > 0.0 ? -q / omega_ratio : 0.0;
+      zp -= partial_period(std::abs(q));  // the averaged remainder of this period decelerates more
+      c.mode = Mode::averaged;
+    } else {
+      const double phase = std::fmod(q, 1.0);
+      zp += partial_period(std::abs(phase));
+      q = c.m.form == AsperityForm::published ? phase : -phase * omega_ratio;
+      c.mode = Mode::resolved;
+    }
+  }
+  TangentialOutcome outcome(double f_end, double energy, double time_unit, long steps) const {
+    TangentialOutcome t;
+    t.cor = zp;
+    t.initial_kinetic = energy;
+    t.final_kinetic = energy * zp * zp;
+    t.asperity_dissipated = energy * d;
+    t.stored_at_end = energy * c.stored(f_end, q);
+    t.stiffness_work = t.final_kinetic + t.asperity_dissipated + t.stored_at_end - energy;
+    t.breaks = breaks;
+    t.averaged_time = averaged_time * time_unit;
+    t.steps = steps;
+    return t;
+  }
+};
+
+// Events 4 (break) and 5 (mode change) on the tangential components starting at `at`
+// (z' = y[at], q = y[at + 1]); `force` gives the scaled normal force of a state.
+template <std::size_t N, class Force>
+void add_tangential_events(std::vector<detail::Event<N>>& events, const TangentialScaled& c, std::size_t at,
+                           Force force) {
+  detail::Event<N> hold, mode;
+  hold.g = [c, at, force](double t, const detail::State<N>& y) { return c.hold(force(t, y), y[at + 1]); };
+  hold.direction = -1;
+  hold.terminal = true;
+  hold.armed = c.m.law == TangentialLaw::asperity && c.mode == Mode::resolved;
+  mode.g = [c, at, force](double t, const detail::State<N>& y) {
+    const double rate = c.breaks_per_time(y[at]);
+    const double change = c.change_per_period(force(t, y), y[at]);
+    // Averaged while sliding fast (rate) and steadily (change); hysteresis, a factor 10
+    // on both, so that the mode cannot chatter.
+    return c.mode == Mode::resolved ? std::max(c.m.dense_breaks - rate, change - dense_change)
+                                    : std::min(rate - 0.1 * c.m.dense_breaks, 10.0 * dense_change - change);
+  };
+  mode.direction = -1;
+  mode.terminal = true;
+  mode.armed = c.m.law == TangentialLaw::asperity;
+  events.push_back(hold);
+  events.push_back(mode);
+}
+
+constexpr int break_event = 4, mode_event = 5;
+
+}  // namespace
+
+TangentialCollision integrate_tangential_collision(const models::NormalForceModel& model, double effective_mass,
+                                                   double normal_speed, double tangential_speed,
+                                                   const TangentialModel& tangential,
+                                                   const NormalCollisionOptions& options) {
+  require_positive("velocity", normal_speed, "normal impact velocity [m/s]");
+  require_positive("tangential_velocity", tangential_speed, "tangential impact velocity [m/s]");
+  require_positive("effective_mass", effective_mass, "effective mass [kg]");
+  validate(tangential);
+  const double xi0 = model.reference_overlap(normal_speed);
+  const double time_unit = xi0 / normal_speed;
+  const double energy_unit = effective_mass * normal_speed * normal_speed;
+  const detail::NormalScaled normal{&model, xi0, normal_speed, xi0 / energy_unit};
+  const double cutoff = model.cutoff_overlap(normal_speed) / xi0;
+
+  TangentialRun run;
+  run.c.m = tangential;
+  run.c.ratio = normal_speed / tangential_speed;
+  if (tangential.law == TangentialLaw::asperity) {
+    run.c.lambda_t = tangential_speed * time_unit / tangential.asperity_size;
+    run.c.lambda_n = xi0 / tangential.asperity_size;
+  }
+  run.c.gamma_t = tangential.shear_damping * time_unit;
+  if (run.asperity() && run.c.averaging_holds(0.0, 1.0)) run.c.mode = Mode::averaged;  // dense from the start
+
+  using State = detail::State<6>;  // x, v, normal dissipation, z', q, D
+  State y{cutoff, 1.0, 0.0, 1.0, 0.0, 0.0};
+  double t = 0.0;
+  detail::NormalEnd end;
+  long steps = 0;
+  for (;;) {
+    const TangentialScaled c = run.c;
+    auto system = [&normal, c](const State& s, State& dsdt, double) {
+      const double f = normal(s, dsdt);
+      c(f, s[3], s[4], dsdt[3], dsdt[4], dsdt[5]);
+    };
+    auto force = [&model, xi0, normal_speed, energy_unit](double, const State& s) {
+      return model.force(xi0 * s[0], normal_speed * s[1]) * xi0 / energy_unit;
+    };
+    std::vector<detail::Event<6>> events =
+        detail::normal_events<6>(model, options.end_rule, cutoff, xi0, normal_speed, energy_unit);
+    if (end.compressed) {  // resumed after the maximum compression
+      events[0].armed = false;
+      events[1].armed = true;
+    }
+    add_tangential_events<6>(events, c, 3, force);
+    IntegrationSettings settings = options.integration;
+    settings.max_steps = options.integration.max_steps - steps;
+    const double step = 1e-3 / std::max(1.0, c.lambda_t * std::abs(y[3]));
+    const auto result = detail::integrate_until_event<6>(system, y, t, step, settings, events);
+    steps += result.steps;
+    if (c.mode == Mode::averaged) run.averaged_time += result.terminal.time - t;
+    for (const auto& hit : result.hits) {
+      if (hit.index == 0) {
+        end.compressed = true;
+        end.max_overlap = hit.state[0];
+        end.max_overlap_time = hit.time;
+      }
+    }
+    y = result.terminal.state;
+    t = result.terminal.time;
+    run.zp = y[3];
+    run.q = y[4];
+    run.d = y[5];
+    const int index = result.terminal.index;
+    if (index == break_event || index == mode_event) {
+      const double f = force(t, y);
+      index == break_event ? run.on_break(f) : run.switch_mode(f);
+      y[3] = run.zp;
+      y[4] = run.q;
+      y[5] = run.d;
+      continue;
+    }
+    end.time = t;
+    end.x = y[0];
+    end.v = y[1];
+    end.dissipated = y[2];
+    end.stuck = index == 3;
+    break;
+  }
+  TangentialCollision out;
+  out.normal.method = "integrate";
+  out.normal.steps = steps;
+  detail::finish_normal_outcome(out.normal, end, model, xi0, time_unit, energy_unit);
+  const double f_end = model.force(xi0 * end.x, normal_speed * end.v) * xi0 / energy_unit;
+  const double tangential_energy = 0.5 * effective_mass * tangential.kappa * tangential_speed * tangential_speed;
+  out.tangential = run.outcome(f_end, tangential_energy, time_unit, steps);
+  return out;
+}
+
+TangentialOutcome integrate_tangential_motion(const std::vector<TrajectorySample>& normal, double effective_mass,
+                                              double tangential_speed, const TangentialModel& tangential,
+                                              const IntegrationSettings& settings) {
+  require_positive("tangential_velocity", tangential_speed, "tangential impact velocity [m/s]");
+  require_positive("effective_mass", effective_mass, "effective mass [kg]");
+  validate(tangential);
+  if (normal.size() < 4) throw NumericalError("the normal trajectory has fewer than 4 samples");
+  // Scaled units from the recording: time unit a third of the contact, speed the impact's.
+  const double t0 = normal.front().time, t_end = normal.back().time;
+  const double time_unit = (t_end - t0) / 3.0;
+  const double normal_speed = std::abs(normal.front().rate);
+  if (!(time_unit > 0.0 && normal_speed > 0.0)) throw NumericalError("the normal trajectory is degenerate");
+  std::vector<double> times, forces;
+  for (const auto& s : normal) {
+    const double tau = (s.time - t0) / time_unit;
+    if (!times.empty() && tau <= times.back()) continue;  // samples at an event can repeat a time
+    times.push_back(tau);
+    forces.push_back((s.elastic_force + s.dissipative_force) * time_unit / (effective_mass * normal_speed));
+  }
+  const double tau_end = times.back();
+  boost::math::interpolators::pchip<std::vector<double>> force_of_time(std::move(times), std::move(forces));
+
+  TangentialRun run;
+  run.c.m = tangential;
+  run.c.ratio = normal_speed / tangential_speed;
+  if (tangential.law == TangentialLaw::asperity) {
+    run.c.lambda_t = tangential_speed * time_unit / tangential.asperity_size;
+    run.c.lambda_n = normal_speed * time_unit / tangential.asperity_size;
+  }
+  run.c.gamma_t = tangential.shear_damping * time_unit;
+  auto f = [&force_of_time, tau_end](double tau) { return force_of_time(std::clamp(tau, 0.0, tau_end)); };
+  if (run.asperity() && run.c.averaging_holds(f(0.0), 1.0)) run.c.mode = Mode::averaged;
+
+  using State = detail::State<3>;  // z', q, D
+  State y{1.0, 0.0, 0.0};
+  double t = 0.0;
+  long steps = 0;
+  for (;;) {
+    const TangentialScaled c = run.c;
+    auto system = [c, f](const State& s, State& dsdt, double tau) { c(f(tau), s[0], s[1], dsdt[0], dsdt[1], dsdt[2]); };
+    // Events 0-3 mirror the coupled integration: only 1 (the end of the recording) is used.
+    std::vector<detail::Event<3>> events(4);
+    for (auto& e : events) {
+      e.g = [](double, const State&) { return 1.0; };
+      e.armed = false;
+    }
+    events[1].g = [tau_end](double tau, const State&) { return tau_end - tau; };
+    events[1].direction = -1;
+    events[1].terminal = true;
+    events[1].armed = true;
+    add_tangential_events<3>(events, c, 0, [f](double tau, const State&) { return f(tau); });
+    IntegrationSettings s = settings;
+    s.max_steps = settings.max_steps - steps;
+    s.max_time = 2.0 * tau_end;
+    const double step = 1e-3 / std::max(1.0, c.lambda_t * std::abs(y[0]));
+    const auto result = detail::integrate_until_event<3>(system, y, t, step, s, events);
+    steps += result.steps;
+    if (c.mode == Mode::averaged) run.averaged_time += result.terminal.time - t;
+    y = result.terminal.state;
+    t = result.terminal.time;
+    run.zp = y[0];
+    run.q = y[1];
+    run.d = y[2];
+    const int index = result.terminal.index;
+    if (index == break_event || index == mode_event) {
+      index == break_event ? run.on_break(f(t)) : run.switch_mode(f(t));
+      y[0] = run.zp;
+      y[1] = run.q;
+      y[2] = run.d;
+      continue;
+    }
+    break;
+  }
+  const double tangential_energy = 0.5 * effective_mass * tangential.kappa * tangential_speed * tangential_speed;
+  return run.outcome(f(tau_end), tangential_energy, time_unit, steps);
+}
+
+}  // namespace bounce::dynamics
