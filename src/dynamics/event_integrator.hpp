@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <boost/numeric/odeint.hpp>
 #include <fmt/format.h>
@@ -40,7 +41,35 @@ struct Event {
   bool terminal = true;
   bool armed = true;  ///< an unarmed event is skipped (armed by another event)
   int arms = -1;      ///< index of an event this one arms when it fires (-1: none)
+  /// Also catch g touching zero inside a step without changing sign at its ends
+  /// (direction -1: an interior minimum reaching 0; +1: a maximum). Needed where the
+  /// event is a threshold that a smooth peak may just reach (an asperity breaking at
+  /// the top of its load): without it such an event is missed until the peak overshoots
+  /// by the step's curvature, so the outcome jumps late (docs/tables.md).
+  bool graze = false;
 };
+
+/// The first point in [lo, hi] where g touches zero from the side `direction` leaves
+/// (-1: g > 0 at both ends), or NaN when it does not. A parabola through the ends and
+/// the midpoint says whether g has an interior extremum; only then is it located
+/// (Brent) and, when it reaches zero, the root before it (TOMS 748).
+template <class G>
+double grazing_root(const G& g, double lo, double hi, double g_lo, double g_hi, int direction) {
+  const double s = direction < 0 ? 1.0 : -1.0;  // minimise s g
+  const double h = hi - lo, a = s * g_lo, b = s * g_hi, m = s * g(lo + 0.5 * h);
+  const double curvature = 2.0 * (a - 2.0 * m + b) / (h * h), slope = (4.0 * m - 3.0 * a - b) / h;
+  if (!(curvature > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  const double vertex = -slope / (2.0 * curvature);
+  if (!(vertex > 0.0 && vertex < h)) return std::numeric_limits<double>::quiet_NaN();
+  std::uintmax_t iterations = 100;
+  const auto [t_min, g_min] =
+      boost::math::tools::brent_find_minima([&](double t) { return s * g(t); }, lo, hi, 40, iterations);
+  if (g_min > 0.0) return std::numeric_limits<double>::quiet_NaN();
+  iterations = 100;
+  const auto bracket = boost::math::tools::toms748_solve([&](double t) { return s * g(t); }, lo, t_min, a, g_min,
+                                                         boost::math::tools::eps_tolerance<double>(52), iterations);
+  return 0.5 * (bracket.first + bracket.second);
+}
 
 template <std::size_t N>
 struct EventHit {
@@ -110,7 +139,18 @@ IntegrationResult<N> integrate_until_event(const System& system, const State<N>&
         const double gb = e.g(tb, yb);
         const bool falls = ga > 0.0 && gb <= 0.0;
         const bool rises = ga < 0.0 && gb >= 0.0;
-        if (!((e.direction <= 0 && falls) || (e.direction >= 0 && rises))) continue;
+        if (!((e.direction <= 0 && falls) || (e.direction >= 0 && rises))) {
+          const bool same_side = e.direction < 0 ? ga > 0.0 && gb > 0.0 : ga < 0.0 && gb < 0.0;
+          if (e.graze && e.direction != 0 && same_side) {
+            const double lo = std::max(ta, window_start[i]);
+            const double root = grazing_root([&](double t) { return e.g(t, at(t)); }, lo, tb, ga, gb, e.direction);
+            if (root < first_time) {
+              first_time = root;
+              first = static_cast<int>(i);
+            }
+          }
+          continue;
+        }
         // The root of g on the dense output, bracketed by [window start, tb].
         const double lo = std::max(ta, window_start[i]);
         auto f = [&](double t) { return t <= lo ? ga : e.g(t, at(t)); };

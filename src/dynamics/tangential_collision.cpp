@@ -179,6 +179,7 @@ void add_tangential_events(std::vector<detail::Event<N>>& events, const Tangenti
   hold.g = [c, at, force](double t, const detail::State<N>& y) { return c.hold(force(t, y), y[at + 1]); };
   hold.direction = -1;
   hold.terminal = true;
+  hold.graze = true;  // an asperity loaded just up to mu F^N at the top of its load breaks
   hold.armed = c.m.law == TangentialLaw::asperity && c.mode == Mode::resolved;
   mode.g = [c, at, force](double t, const detail::State<N>& y) {
     const double rate = c.breaks_per_time(y[at]);
@@ -263,7 +264,12 @@ TangentialCollision integrate_tangential_collision(const models::NormalForceMode
     run.q = y[4];
     run.d = y[5];
     const int index = result.terminal.index;
-    if (index == break_event || index == mode_event) {
+    // A restart exactly where the contact ends would miss its event (the end function
+    // starts on its far side): the contact has ended if the state says so.
+    const bool over = end.compressed && (options.end_rule == EndRule::overlap
+                                             ? y[0] <= cutoff
+                                             : y[0] <= 0.0 || model.force_sign(xi0 * y[0], normal_speed * y[1]) <= 0.0);
+    if ((index == break_event || index == mode_event) && !over) {
       const double f = force(t, y);
       index == break_event ? run.on_break(f) : run.switch_mode(f);
       y[3] = run.zp;
@@ -352,7 +358,7 @@ TangentialOutcome integrate_tangential_motion(const std::vector<TrajectorySample
     run.q = y[1];
     run.d = y[2];
     const int index = result.terminal.index;
-    if (index == break_event || index == mode_event) {
+    if ((index == break_event || index == mode_event) && t < tau_end) {
       index == break_event ? run.on_break(f(t)) : run.switch_mode(f(t));
       y[0] = run.zp;
       y[1] = run.q;

@@ -217,3 +217,33 @@ TEST(Tangential, DrivenByRecordedForceAgreesWithCoupled) {
     }
   }
 }
+
+// An asperity loaded just up to mu F^N at the top of its load breaks: the event
+// integrator catches the touch inside a step (Event::graze). Without it the first break
+// appeared only once the peak overshot by the step's curvature, so the threshold g^T
+// moved with the tolerance (by 1.8e-4 relative between 1e-8 and 1e-12; with it 1e-8).
+TEST(Tangential, BreakThresholdIndependentOfTolerance) {
+  const auto t = asperity(2e-4);
+  const auto force = models::make_normal_force(viscoelastic(), bshp96());
+  auto threshold = [&](double tol) {
+    dynamics::NormalCollisionOptions o;
+    o.integration.relative_tolerance = tol;
+    o.integration.absolute_tolerance = tol;
+    auto breaks = [&](double gt) {
+      return dynamics::integrate_tangential_collision(*force, bshp96().effective_mass(), 1.0, gt, t, o)
+          .tangential.breaks;
+    };
+    double lo = 0.03, hi = 0.04;
+    EXPECT_EQ(breaks(lo), 0);
+    EXPECT_GT(breaks(hi), 0);
+    while (hi - lo > 1e-13) {
+      const double mid = 0.5 * (lo + hi);
+      (breaks(mid) == 0 ? lo : hi) = mid;
+    }
+    return lo;
+  };
+  const double fine = threshold(1e-12), coarse = threshold(1e-8);
+  // The event error scales with the tolerance: 1e-8 relative at tol 1e-8 (measured),
+  // the bound 1e-7 leaves a factor 10.
+  EXPECT_NEAR(coarse / fine, 1.0, 1e-7);
+}
