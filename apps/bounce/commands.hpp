@@ -10,4 +10,5 @@ Command add_curve_command(CLI::App& root);
 Command add_analytic_command(CLI::App& root);
 Command add_sticking_command(CLI::App& root);
 Command add_rules_command(CLI::App& root);
+Command add_table_command(CLI::App& root);
 }  // namespace bounce::cli

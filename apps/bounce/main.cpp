@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
   std::vector<Command> commands = {add_materials_command(app), add_contact_command(app),
                                   add_collide_command(app),   add_curve_command(app),
                                   add_analytic_command(app),  add_sticking_command(app),
-                                  add_rules_command(app)};
+                                  add_rules_command(app),     add_table_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

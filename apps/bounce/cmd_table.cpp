@@ -1,0 +1,111 @@
+// `bounce table`: eps^N(g) with the outcome as a table for other simulators (JSON, CSV or
+// a self-contained C header; docs/tables.md), or the value of a saved JSON table.
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "bounce/analysis/tables.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+#include "cli.hpp"
+#include "commands.hpp"
+
+namespace bounce::cli {
+
+namespace {
+
+struct TableCommand {
+  explicit TableCommand(CLI::App* app) : bodies(app), numbers(app), model(app, numbers) {}
+  BodyOptions bodies;
+  NumberOptions numbers;
+  ModelOptions model;
+  std::string velocities;
+  bool json = false, csv = false;
+  std::string c_header_prefix;
+  std::string load;
+  bool progress = false;
+};
+
+// "LO:HI" -> the two ends (velocities > 0, HI > LO).
+std::array<double, 2> parse_interval(const std::string& option, const std::string& text) {
+  const std::string allowed = "LO:HI in m/s with 0 < LO < HI";
+  const auto colon = text.find(':');
+  if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos) {
+    throw InvalidArgument(option, text, allowed);
+  }
+  double lo = 0.0, hi = 0.0;
+  try {
+    std::size_t n1 = 0, n2 = 0;
+    lo = std::stod(text.substr(0, colon), &n1);
+    hi = std::stod(text.substr(colon + 1), &n2);
+    if (n1 != colon || n2 != text.size() - colon - 1) throw InvalidArgument(option, text, allowed);
+  } catch (const std::logic_error&) {
+    throw InvalidArgument(option, text, allowed);
+  }
+  if (!(lo > 0.0) || !(hi > lo) || !std::isfinite(hi)) throw InvalidArgument(option, text, allowed);
+  return {lo, hi};
+}
+
+int run_load(const TableCommand& c) {
+  std::ifstream in(c.load);
+  if (!in) throw InvalidArgument("--load", c.load, "a readable JSON file written by bounce table --json");
+  std::stringstream text;
+  text << in.rdbuf();
+  const NormalTable t = [&] {
+    try {
+      return NormalTable::from_json(text.str());
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("--load", c.load, e.allowed());
+    }
+  }();
+  const double g = c.numbers.require("--velocity", "the impact speed at which to read the table");
+  const double cor = t.cor(g);
+  const auto outcome = t.outcome(g);
+  if (c.json) {
+    print_json({{"velocity", g}, {"cor", cor}, {"outcome", std::string(dynamics::to_string(outcome))},
+                {"bound", t.bound}, {"description", t.description}});
+  } else {
+    std::cout << fmt::format("cor {:.10g} ({}), table error <= {:g}\n", cor, dynamics::to_string(outcome), t.bound);
+  }
+  return 0;
+}
+
+int run_table(const TableCommand& c) {
+  if (!c.load.empty()) return run_load(c);
+  if (c.velocities.empty()) throw InvalidArgument("--velocities", "(missing)", "LO:HI in m/s (the table's range)");
+  const int formats = int(c.json) + int(c.csv) + int(!c.c_header_prefix.empty());
+  if (formats != 1) {
+    throw InvalidArgument("format", fmt::format("{} given", formats), "exactly one of --json, --csv, --c-header PREFIX");
+  }
+  const auto [lo, hi] = parse_interval("--velocities", c.velocities);
+  TableOptions options;
+  options.bound = c.numbers.get("--bound").value_or(1e-6);
+  require_open_interval("bound", options.bound, 1e-10, 0.1, "interpolation error bound");
+  Progress progress("bounce table", c.progress);
+  options.progress = [&](std::size_t done, std::size_t total) { progress(done, total); };
+  const NormalTable t = build_normal_table(c.bodies.pair(), c.model.spec(), lo, hi, c.model.collide_options(), options);
+  if (c.json) std::cout << t.to_json() << '\n';
+  if (c.csv) std::cout << t.to_csv();
+  if (!c.c_header_prefix.empty()) std::cout << t.to_c_header(c.c_header_prefix);
+  return 0;
+}
+
+}  // namespace
+
+Command add_table_command(CLI::App& root) {
+  auto* app = root.add_subcommand("table", "eps^N(g) and the outcome as a table for other simulators (docs/tables.md)");
+  auto c = std::make_shared<TableCommand>(app);
+  app->add_option("--velocities", c->velocities, "the table's range LO:HI of impact speeds [m/s]");
+  app->add_flag("--json", c->json, "write the table as JSON (read back by --load and NormalTable::from_json)");
+  app->add_flag("--csv", c->csv, "write the table's nodes as CSV");
+  app->add_option("--c-header", c->c_header_prefix, "write a self-contained C99 header; PREFIX names its symbols");
+  app->add_option("--load", c->load, "read a JSON table and print its value at --velocity");
+  app->add_flag("--progress", c->progress, "report progress on stderr (automatic on a terminal)");
+  c->numbers.add("--bound", "interpolation error to reach (default 1e-6)");
+  c->numbers.add("--velocity", "with --load: the impact speed [m/s]");
+  return {app, [c]() { return run_table(*c); }};
+}
+
+}  // namespace bounce::cli
