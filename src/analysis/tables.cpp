@@ -69,14 +69,6 @@ double PiecewiseCubic::operator()(double at) const {
   return in_piece(label_at(at), at);
 }
 
-std::vector<PiecewiseCubic::Jump> PiecewiseCubic::jumps() const {
-  std::vector<Jump> out;
-  for (std::size_t i = 0; i + 1 < x.size(); ++i) {
-    if (label[i] != label[i + 1]) out.push_back({0.5 * (x[i] + x[i + 1]), label[i], label[i + 1]});
-  }
-  return out;
-}
-
 namespace {
 
 // --- building a PiecewiseCubic -----------------------------------------------------

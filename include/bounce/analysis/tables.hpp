@@ -21,18 +21,13 @@ struct PiecewiseCubic {
   std::vector<double> x;      ///< nodes, ascending
   std::vector<double> f;      ///< values
   std::vector<double> slope;  ///< derivatives df/dx
-  std::vector<long> label;    ///< piece label of each node (e.g. asperity breaks)
+  std::vector<long> label;    ///< piece label of each node (the outcome: 1 bounce, 0 stick)
 
   double operator()(double x) const;
   /// The value of the piece with this label at x, extrapolating it beyond its ends
   /// (the side of a jump a point inside its 1e-11 bracket belongs to).
   double in_piece(long label, double x) const;
   long label_at(double x) const;
-  struct Jump {
-    double x;           ///< position (midway between the facing nodes)
-    long left, right;   ///< labels on either side
-  };
-  std::vector<Jump> jumps() const;
 };
 
 struct TableOptions {
