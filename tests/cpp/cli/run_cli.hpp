@@ -10,6 +10,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 namespace bounce::testing {
 
 struct CliResult {
@@ -53,6 +55,20 @@ inline int count_lines(const std::string& s) {
   int n = 0;
   for (char c : s) n += c == '\n';
   return n;
+}
+
+/// The bad-input rule (exit 2, nothing on stdout, one line on stderr naming the
+/// parameter, its value and the allowed range, no uncaught exception).
+inline void expect_rejected(const std::vector<std::string>& args, const std::string& parameter,
+                            const std::string& value) {
+  const auto r = run_cli(args);
+  SCOPED_TRACE(::testing::PrintToString(args));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(parameter + " = " + value), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("expected"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("terminate"), std::string::npos) << r.err;
 }
 
 }  // namespace bounce::testing

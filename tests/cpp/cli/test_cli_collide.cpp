@@ -8,6 +8,7 @@
 #include "cli/run_cli.hpp"
 
 using bounce::testing::count_lines;
+using bounce::testing::expect_rejected;
 using bounce::testing::run_cli;
 
 namespace {
@@ -19,14 +20,6 @@ std::vector<std::string> ice(std::vector<std::string> more) {
 std::vector<std::string> command(const std::string& name, std::vector<std::string> args) {
   args.insert(args.begin(), name);
   return args;
-}
-void expect_rejected(const std::vector<std::string>& args, const std::string& parameter, const std::string& value) {
-  const auto r = run_cli(args);
-  SCOPED_TRACE(testing::PrintToString(args));
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.out, "");
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(parameter + " = " + value), std::string::npos) << r.err;
 }
 }  // namespace
 

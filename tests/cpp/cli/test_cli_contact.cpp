@@ -13,6 +13,7 @@
 #include "cli/run_cli.hpp"
 
 using bounce::testing::count_lines;
+using bounce::testing::expect_rejected;
 using bounce::testing::run_cli;
 
 namespace {
@@ -29,18 +30,6 @@ std::string write_temp(const std::string& name, const std::string& text) {
   return path.string();
 }
 
-// The bad-input rule, with the parameter name and value that must be named.
-void expect_rejected(const std::vector<std::string>& args, const std::string& parameter,
-                     const std::string& value) {
-  const auto r = run_cli(args);
-  SCOPED_TRACE(testing::PrintToString(args));
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.out, "");
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(parameter + " = " + value), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("expected"), std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find("terminate"), std::string::npos) << r.err;
-}
 }  // namespace
 
 TEST(CliMaterials, ListsTheTable) {
