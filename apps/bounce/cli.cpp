@@ -9,10 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "bounce/analytic/adhesive.hpp"
-#include "bounce/analytic/master_curve.hpp"
-#include "bounce/analytic/viscoelastic.hpp"
-#include "bounce/contact/surface_forces.hpp"
+#include "bounce/analysis/closed_forms.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/pair/mixing.hpp"
@@ -388,36 +385,24 @@ CollideOptions ModelOptions::collide_options() const {
 }
 
 nlohmann::json adhesive_closed_forms(const Pair& pair, const models::ModelSpec& spec, double v) {
+  const AdhesiveClosedForms c = bounce::adhesive_closed_forms(pair, spec, v);
   nlohmann::json j;
-  const double gamma = pair.require_surface_energy("model " + spec.name);
-  const double r = pair.effective_radius(), e = pair.effective_modulus(), m = pair.effective_mass();
-  const double v_c = analytic::sticking_velocity_jkr(m, r, e, gamma);
-  const double t_h = analytic::hertz_contact_time_k13(m, r, e, v);
-  j["sticking_velocity_jkr"] = v_c;
-  j["sticking_velocity_k13_25"] = analytic::sticking_velocity_k13(m, r, e, gamma);
-  j["e_jkr"] = analytic::cor_jkr(v, v_c);
-  j["hertz_time_k13_22"] = t_h;
-  j["tabor_parameter"] = surface::tabor_parameter(r, e, gamma, spec.z0);
-  if (spec.relaxation_time || spec.dissipative_constant) {
-    const double a = spec.name == "krijt" || spec.name == "jkr-viscoelastic"
-                         ? models::krijt_parameters(spec, pair).dissipative_constant
-                         : models::dissipative_constant(spec, pair);
-    j["dissipative_constant"] = a;
-    j["e_d"] = analytic::cor_viscous_k13(a, t_h);
-    j["e_i"] = analytic::cor_independent(j["e_jkr"].get<double>(), j["e_d"].get<double>());
-  }
-  if (spec.name == "adhesive-viscoelastic") {
-    const double w0 = analytic::tensile_work(r, e, gamma);
-    const ViscoelasticScales s = viscoelastic_scales(pair, spec, v);
-    j["tensile_work_bp04_8_95"] = w0;
-    j["e_ad_bp04_8_98"] = analytic::cor_adhesive_bp04(analytic::master_cor(s.kappa, dynamics::EndRule::overlap), v, w0, m);
-  }
-  if (spec.yield_strength) {
-    const double v_y = analytic::yield_velocity(r, m, e, *spec.yield_strength);
-    j["yield_velocity"] = v_y;
-    j["e_plastic"] = analytic::cor_thornton_ning(v, v_y);
-    j["plastic_length_scale"] = analytic::plastic_length_scale(m, v, r, e);
-  }
+  j["sticking_velocity_jkr"] = c.sticking_velocity_jkr;
+  j["sticking_velocity_k13_25"] = c.sticking_velocity_k13_25;
+  j["e_jkr"] = c.e_jkr;
+  j["hertz_time_k13_22"] = c.hertz_time_k13_22;
+  j["tabor_parameter"] = c.tabor_parameter;
+  const auto put = [&j](const char* key, const std::optional<double>& x) {
+    if (x) j[key] = *x;
+  };
+  put("dissipative_constant", c.dissipative_constant);
+  put("e_d", c.e_d);
+  put("e_i", c.e_i);
+  put("tensile_work_bp04_8_95", c.tensile_work_bp04_8_95);
+  put("e_ad_bp04_8_98", c.e_ad_bp04_8_98);
+  put("yield_velocity", c.yield_velocity);
+  put("e_plastic", c.e_plastic);
+  put("plastic_length_scale", c.plastic_length_scale);
   return j;
 }
 

@@ -53,7 +53,7 @@ int run_analytic(const AnalyticCommand& c) {
   const auto ours = analytic::master_series_overlap();
   const auto force_correction = analytic::master_series_force_correction();
   // BP04's printed d_k (8.93) and those (8.93) gives from a given set of a_k.
-  const analytic::PadeCoefficients bp04_printed{-0.029, 2.583, 3.583, 2.983, 1.148, 0.326};
+  const analytic::PadeCoefficients bp04_printed = analytic::bp04_printed_pade();
   const auto pade_rigorous = analytic::pade_coefficients(bp04_rigorous);
   const auto pade_ours = analytic::pade_coefficients(ours);
 

@@ -113,6 +113,8 @@ PadeCoefficients pade_coefficients(const IntegerSeries& s) {
   return pade_coefficients(s.a.at(1), s.a.at(2), s.a.at(3));
 }
 
+PadeCoefficients bp04_printed_pade() { return {-0.029, 2.583, 3.583, 2.983, 1.148, 0.326}; }  // BP04 (8.93)
+
 double cor_pade(double q, const PadeCoefficients& d) {  // BP04 (8.92)
   return (1.0 + d.d1 * q) / (1.0 + q * (d.d2 + q * (d.d3 + q * (d.d4 + q * d.d5))));
 }

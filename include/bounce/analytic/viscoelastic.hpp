@@ -61,6 +61,9 @@ struct PadeCoefficients {
 };
 PadeCoefficients pade_coefficients(double a2, double a3, double a4);
 PadeCoefficients pade_coefficients(const IntegerSeries& series);
+/// BP04 (8.93) as printed: d1..d5 = 2.583, 3.583, 2.983, 1.148, 0.326 (d0 = -0.029); the
+/// curve of BP04 Fig 8.2 (docs/viscoelastic.md compares them with (8.93) applied to a_k).
+PadeCoefficients bp04_printed_pade();
 /// BP04 (8.92): e = (1 + d1 q) / (1 + d2 q + d3 q^2 + d4 q^3 + d5 q^4).
 double cor_pade(double q, const PadeCoefficients& d);
 

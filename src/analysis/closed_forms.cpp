@@ -1,0 +1,45 @@
+#include "bounce/analysis/closed_forms.hpp"
+
+#include "bounce/analysis/collide.hpp"
+#include "bounce/analytic/adhesive.hpp"
+#include "bounce/analytic/master_curve.hpp"
+#include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/surface_forces.hpp"
+#include "bounce/models/krijt.hpp"
+#include "bounce/models/normal_force.hpp"
+
+namespace bounce {
+
+AdhesiveClosedForms adhesive_closed_forms(const Pair& pair, const models::ModelSpec& spec, double v) {
+  AdhesiveClosedForms c;
+  const double gamma = pair.require_surface_energy("model " + spec.name);
+  const double r = pair.effective_radius(), e = pair.effective_modulus(), m = pair.effective_mass();
+  c.sticking_velocity_jkr = analytic::sticking_velocity_jkr(m, r, e, gamma);
+  c.sticking_velocity_k13_25 = analytic::sticking_velocity_k13(m, r, e, gamma);  // K13 (25)
+  c.e_jkr = analytic::cor_jkr(v, c.sticking_velocity_jkr);                      // K13 (24)
+  c.hertz_time_k13_22 = analytic::hertz_contact_time_k13(m, r, e, v);            // K13 (22)
+  c.tabor_parameter = surface::tabor_parameter(r, e, gamma, spec.z0);            // K13 (11)
+  if (spec.relaxation_time || spec.dissipative_constant) {
+    const double a = spec.name == "krijt" || spec.name == "jkr-viscoelastic"
+                         ? models::krijt_parameters(spec, pair).dissipative_constant
+                         : models::dissipative_constant(spec, pair);
+    c.dissipative_constant = a;
+    c.e_d = analytic::cor_viscous_k13(a, c.hertz_time_k13_22);  // K13 (26)
+    c.e_i = analytic::cor_independent(c.e_jkr, *c.e_d);         // K13 (27)
+  }
+  if (spec.name == "adhesive-viscoelastic") {
+    const double w0 = analytic::tensile_work(r, e, gamma);  // BP04 (8.95)
+    const ViscoelasticScales s = viscoelastic_scales(pair, spec, v);
+    c.tensile_work_bp04_8_95 = w0;
+    c.e_ad_bp04_8_98 =  // BP04 (8.98)
+        analytic::cor_adhesive_bp04(analytic::master_cor(s.kappa, dynamics::EndRule::overlap), v, w0, m);
+  }
+  if (spec.yield_strength) {
+    c.yield_velocity = analytic::yield_velocity(r, m, e, *spec.yield_strength);  // K13 (28)
+    c.e_plastic = analytic::cor_thornton_ning(v, *c.yield_velocity);            // K13 (29)
+    c.plastic_length_scale = analytic::plastic_length_scale(m, v, r, e);        // K13 (33)
+  }
+  return c;
+}
+
+}  // namespace bounce
