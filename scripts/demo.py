@@ -1,7 +1,10 @@
 #!/usr/bin/python3
-"""The bounce demo: runs the CLI for a default pair and writes a report under out/.
+"""The bounce demo: the papers' figures (out/figures/) and a report of the key numbers
+(out/report.md), with the data behind them as CSV.
 
-Default pair: two water-ice spheres of radius 1 um (K13 table 2 properties).
+The numbers come from the CLI (build/bin/bounce), the figures from the Python package
+(build/python, bounce.figures). Default pair for static contact: two water-ice spheres of
+radius 1 um (K13 table 2 properties).
 """
 import argparse
 import json
@@ -153,21 +156,41 @@ def adhesive_section(runner: Runner, out: pathlib.Path) -> list[str]:
                    "--overlaps", "0:6e-8:121"))
     runner.progress("K13 fig. 4: COR against velocity with e_JKR, e_D, e_I")
     (k13 / "fig4-cor-velocity.csv").write_text(
-        runner.run("curve", *K13, "--radius", K13_RADIUS, "--velocities", "0.1:100:100", "--log", "--closed-forms"))
+        runner.run("curve", *K13, "--radius", K13_RADIUS, "--z0", K13_Z0, "--velocities", "0.1:100:100", "--log",
+                   "--closed-forms"))
     runner.progress("K13 fig. 5 (left): COR against radius at 8 m/s")
     (k13 / "fig5-cor-radius-8ms.csv").write_text(
-        runner.run("curve", *K13, "--radii", "2e-7:2e-4:61", "--log", "--velocity", "8", "--closed-forms"))
+        runner.run("curve", *K13, "--z0", K13_Z0, "--radii", "2e-7:2e-4:61", "--log", "--velocity", "8",
+                   "--closed-forms"))
     runner.progress("K13 fig. 5 (right): sticking velocity against radius for several T_vis")
     for tvis in ("1e-14", "1e-13", "1e-12", "1e-11", "1e-10"):
         (k13 / f"fig5-sticking-velocity-tvis{tvis}.csv").write_text(
-            runner.run("sticking", "--material", "water-ice", "--model", "krijt", "--tvis", tvis,
+            runner.run("sticking", "--material", "water-ice", "--model", "krijt", "--tvis", tvis, "--z0", K13_Z0,
                        "--radii", "2e-7:2e-4:25", "--log"))
     runner.progress("K13 fig. C1 and C2: energies against time")
     lines += ["Data for K13's figures under `k13/`: `fig2-bounce-8ms.csv` and `fig3-stick-2ms.csv` "
               "(trajectories: a, delta, F_E, beta and every energy against time; the second followed for "
               "0.2 us, which also gives fig. C2, and the first fig. C1), `hertz-curve.csv` and `jkr-curve.csv` "
               "(the static curves of figs 2 and 3), `fig4-cor-velocity.csv` (with K13 (24), (26), (27)), "
-              "`fig5-cor-radius-8ms.csv` and `fig5-sticking-velocity-tvis*.csv`.", ""]
+              "`fig5-cor-radius-8ms.csv` and `fig5-sticking-velocity-tvis*.csv` (all with z0 = 0.088 nm, as the figures).", ""]
+    return lines
+
+
+def figures_section(runner: Runner, build_dir: pathlib.Path, out: pathlib.Path) -> list[str]:
+    sys.path.insert(0, str(build_dir / "python"))
+    from bounce import figures, plot  # the package of this build
+
+    written = figures.write_figures(out / "figures", progress=runner.progress)
+    lines = ["## Figures (`figures/`, PNG and SVG)", "",
+             "Regenerated from the library by `python3 -m bounce.figures`; docs/figures.md compares each with the "
+             "paper.", "", "| file | figure |", "|---|---|"]
+    for name, function in plot.FIGURES.items():
+        lines.append(f"| `{name}.png`, `.svg` | {function.__doc__.strip().splitlines()[0]} |")
+    ice = plot.b.Pair(material=plot.BSHP96_MATERIAL, radius=plot.BSHP96_RADIUS)
+    a = plot.dissipative_constant_for(ice, plot.BP04_ICE_CHARACTERISTIC_VELOCITY)
+    lines += ["", f"BSHP96 Fig. 1 uses A = {a:.4g} s, the A for which BP04 (8.88) gives g* = 0.32 cm/s for two "
+              "1 cm ice spheres (BSHP96 fit A to the same data but do not print it).", ""]
+    assert len(written) == 2 * len(plot.FIGURES)
     return lines
 
 
@@ -176,7 +199,8 @@ def main() -> None:
     parser.add_argument("--build-dir", default="build")
     parser.add_argument("--out", default="out")
     args = parser.parse_args()
-    runner = Runner(pathlib.Path(args.build_dir) / "bin" / "bounce")
+    build_dir = pathlib.Path(args.build_dir)
+    runner = Runner(build_dir / "bin" / "bounce")
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
 
@@ -187,8 +211,9 @@ def main() -> None:
     runner.progress("JKR force-overlap curve")
     (out / "jkr-force-overlap.csv").write_text(
         runner.run("contact", *PAIR, "--law", "jkr", "--csv", "--contact-radii", "0:1.5e-7:301"))
+    report += figures_section(runner, build_dir, out)
     (out / "report.md").write_text("\n".join(report))
-    runner.progress(f"wrote {out / 'report.md'} and the CSV files under {out}/")
+    runner.progress(f"wrote {out / 'report.md'}, the figures under {out / 'figures'}/ and the CSV files under {out}/")
 
 
 if __name__ == "__main__":

@@ -14,27 +14,39 @@ range; a numerical failure raises RuntimeError.
 """
 
 from ._bounce import (  # noqa: F401
+    ContactLaw,
     Model,
     NormalTable,
     Pair,
     apply_restitution,
+    closed_forms,
     collide,
     collide_grains,
+    contact_laws,
+    cor_pade,
+    cor_series,
     master_cor,
     material,
     material_names,
     sticking_velocity,
+    viscoelastic_scales,
 )
 
 __all__ = [
+    "ContactLaw",
     "Model",
     "NormalTable",
     "Pair",
     "apply_restitution",
+    "closed_forms",
     "collide",
     "collide_grains",
+    "contact_laws",
+    "cor_pade",
+    "cor_series",
     "master_cor",
     "material",
     "material_names",
     "sticking_velocity",
+    "viscoelastic_scales",
 ]

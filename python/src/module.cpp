@@ -11,11 +11,14 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "bounce/analysis/closed_forms.hpp"
 #include "bounce/analysis/collide.hpp"
 #include "bounce/analysis/rules.hpp"
 #include "bounce/analysis/sticking.hpp"
 #include "bounce/analysis/tables.hpp"
 #include "bounce/analytic/master_curve.hpp"
+#include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/law.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/models/registry.hpp"
@@ -189,6 +192,103 @@ py::dict rule_dict(const CollisionRuleResult& r) {
   return d;
 }
 
+// The trajectory as a dict of arrays (one entry per TrajectorySample field).
+py::dict trajectory_dict(const std::vector<dynamics::TrajectorySample>& samples) {
+  const auto column = [&](double dynamics::TrajectorySample::*field) {
+    Array a(static_cast<py::ssize_t>(samples.size()));
+    for (std::size_t i = 0; i < samples.size(); ++i) a.mutable_data()[i] = samples[i].*field;
+    return a;
+  };
+  using S = dynamics::TrajectorySample;
+  py::dict d;
+  d["time"] = column(&S::time);
+  d["overlap"] = column(&S::overlap);
+  d["rate"] = column(&S::rate);
+  d["contact_radius"] = column(&S::contact_radius);
+  d["elastic_force"] = column(&S::elastic_force);
+  d["dissipative_force"] = column(&S::dissipative_force);
+  d["beta"] = column(&S::effective_surface_energy_ratio);
+  d["kinetic"] = column(&S::kinetic);
+  d["elastic"] = column(&S::elastic);
+  d["surface"] = column(&S::surface);
+  d["bulk_dissipated"] = column(&S::bulk_dissipated);
+  d["crack_dissipated"] = column(&S::crack_dissipated);
+  return d;
+}
+
+// A static contact law bound to one pair (contact/law.hpp).
+struct PyContactLaw {
+  std::shared_ptr<contact::ContactLaw> law;
+};
+
+using ContactAt = contact::ContactPoint (contact::ContactLaw::*)(double) const;
+
+// law->*at for a float (-> dict) or an array (-> dict of arrays of its shape).
+py::object contact_points(const PyContactLaw& l, ContactAt at, py::object x) {
+  const auto point_dict = [](const contact::ContactPoint& p) {
+    py::dict d;
+    d["contact_radius"] = p.contact_radius;
+    d["overlap"] = p.overlap;
+    d["force"] = p.force;
+    return d;
+  };
+  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) {
+    return point_dict(((*l.law).*at)(x.cast<double>()));
+  }
+  const Array in = x.cast<Array>();
+  std::vector<py::ssize_t> shape(in.shape(), in.shape() + in.ndim());
+  Array a(shape), delta(shape), force(shape);
+  for (py::ssize_t i = 0; i < in.size(); ++i) {
+    const auto p = ((*l.law).*at)(in.data()[i]);
+    a.mutable_data()[i] = p.contact_radius;
+    delta.mutable_data()[i] = p.overlap;
+    force.mutable_data()[i] = p.force;
+  }
+  py::dict d;
+  d["contact_radius"] = a;
+  d["overlap"] = delta;
+  d["force"] = force;
+  return d;
+}
+
+py::dict closed_forms_dict(const AdhesiveClosedForms& c) {
+  py::dict d;
+  d["sticking_velocity_jkr"] = c.sticking_velocity_jkr;
+  d["sticking_velocity_k13_25"] = c.sticking_velocity_k13_25;
+  d["e_jkr"] = c.e_jkr;
+  d["hertz_time_k13_22"] = c.hertz_time_k13_22;
+  d["tabor_parameter"] = c.tabor_parameter;
+  const auto put = [&d](const char* key, const std::optional<double>& x) {
+    if (x) d[key] = *x;
+  };
+  put("dissipative_constant", c.dissipative_constant);
+  put("e_d", c.e_d);
+  put("e_i", c.e_i);
+  put("tensile_work_bp04_8_95", c.tensile_work_bp04_8_95);
+  put("e_ad_bp04_8_98", c.e_ad_bp04_8_98);
+  put("yield_velocity", c.yield_velocity);
+  put("e_plastic", c.e_plastic);
+  put("plastic_length_scale", c.plastic_length_scale);
+  return d;
+}
+
+// The a_k of BP04 (8.89) by name: "bp04-simple", "bp04" (quoted), "bounce" (master curve fit).
+analytic::IntegerSeries series_named(const std::string& name) {
+  if (name == "bp04-simple") return analytic::bp04_simple_series();
+  if (name == "bp04") return analytic::bp04_rigorous_series();
+  if (name == "bounce") return analytic::master_series_overlap();
+  throw InvalidArgument("series", name, "one of bp04-simple, bp04, bounce");
+}
+
+// The d_k of BP04 (8.92): "bp04-printed" (8.93 as printed) or (8.93) applied to a named series.
+analytic::PadeCoefficients pade_named(const std::string& name) {
+  if (name == "bp04-printed") return analytic::bp04_printed_pade();
+  if (name == "bp04-simple" || name == "bp04" || name == "bounce") {
+    return analytic::pade_coefficients(series_named(name));
+  }
+  throw InvalidArgument("coefficients", name, "one of bp04-printed, bp04-simple, bp04, bounce");
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_bounce, m) {
@@ -256,24 +356,159 @@ PYBIND11_MODULE(_bounce, m) {
   m.def(
       "collide",
       [](const Pair& pair, const models::ModelSpec& model, py::object velocity, double tangential_velocity,
-         const std::string& method) -> py::object {
-        const CollideOptions o = options(method, tangential_velocity);
-        if (py::isinstance<py::float_>(velocity) || py::isinstance<py::int_>(velocity)) {
+         const std::string& method, bool trajectory, int trajectory_points, double follow_time) -> py::object {
+        CollideOptions o = options(method, tangential_velocity);
+        const bool scalar = py::isinstance<py::float_>(velocity) || py::isinstance<py::int_>(velocity);
+        if (trajectory) {
+          if (!scalar) throw InvalidArgument("trajectory", "True", "a single velocity (not an array)");
+          if (trajectory_points < 2) {
+            throw InvalidArgument("trajectory_points", std::to_string(trajectory_points), "at least 2 samples");
+          }
+          o.record_trajectory = true;
+          o.trajectory_points = trajectory_points;
+        }
+        require_finite("follow_time", follow_time);
+        if (follow_time < 0.0) throw InvalidArgument("follow_time", std::to_string(follow_time), ">= 0 s");
+        o.follow_time = follow_time;
+        if (scalar) {
           const double v = velocity.cast<double>();
           dynamics::CollisionOutcome out;
           {
             py::gil_scoped_release release;
             out = collide(pair, model, v, o);
           }
-          return outcome_dict(out);
+          py::dict d = outcome_dict(out);
+          if (trajectory) d["trajectory"] = trajectory_dict(out.trajectory);
+          return d;
         }
         return collide_many(pair, model, velocity.cast<Array>(), o);
       },
       py::arg("pair"), py::arg("model"), py::arg("velocity"), py::kw_only(), py::arg("tangential_velocity") = 0.0,
-      py::arg("method") = "auto",
+      py::arg("method") = "auto", py::arg("trajectory") = false, py::arg("trajectory_points") = 400,
+      py::arg("follow_time") = 0.0,
       "One head-on (or oblique) collision at impact speed `velocity` [m/s]: a dict with cor, outcome, "
       "contact_time, max_overlap, energy, warnings (and cor_tangential). An array of speeds gives a dict of arrays "
-      "(cor, stick, contact_time, max_overlap, bulk_dissipated, crack_dissipated), computed in C++.");
+      "(cor, stick, contact_time, max_overlap, bulk_dissipated, crack_dissipated), computed in C++. "
+      "trajectory=True (one speed) adds 'trajectory': arrays time, overlap, rate, contact_radius, elastic_force, "
+      "dissipative_force, beta, kinetic, elastic, surface, bulk_dissipated, crack_dissipated [SI]; follow_time [s] "
+      "keeps integrating a sticking collision (krijt, jkr-viscoelastic) to show how the grains settle.");
+
+  m.def(
+      "closed_forms",
+      [](const Pair& pair, const models::ModelSpec& model, py::object velocity) -> py::object {
+        if (py::isinstance<py::float_>(velocity) || py::isinstance<py::int_>(velocity)) {
+          return closed_forms_dict(adhesive_closed_forms(pair, model, velocity.cast<double>()));
+        }
+        const Array v = velocity.cast<Array>();
+        std::vector<py::ssize_t> shape(v.shape(), v.shape() + v.ndim());
+        py::dict columns;
+        for (py::ssize_t i = 0; i < v.size(); ++i) {
+          const py::dict row = closed_forms_dict(adhesive_closed_forms(pair, model, v.data()[i]));
+          for (auto item : row) {
+            if (!columns.contains(item.first)) columns[item.first] = Array(shape);
+            columns[item.first].cast<Array>().mutable_data()[i] = item.second.cast<double>();
+          }
+        }
+        return columns;
+      },
+      py::arg("pair"), py::arg("model"), py::arg("velocity"),
+      "The closed forms beside an adhesive collision: K13 (22) hertz_time_k13_22, (24) e_jkr, (25) "
+      "sticking_velocity_k13_25 and the exact sticking_velocity_jkr, (26) e_d, (27) e_i, (11) tabor_parameter; "
+      "BP04 (8.95), (8.98) for adhesive-viscoelastic; K13 (28), (29), (33) with a yield strength. "
+      "An array of speeds gives a dict of arrays.");
+
+  m.def(
+      "viscoelastic_scales",
+      [](const Pair& pair, const models::ModelSpec& model, double velocity) {
+        const ViscoelasticScales s = viscoelastic_scales(pair, model, velocity);
+        py::dict d;
+        d["dissipative_constant"] = s.dissipative_constant;
+        d["force_constant"] = s.force_constant;
+        d["kappa"] = s.kappa;
+        d["characteristic_velocity"] = s.characteristic_velocity;
+        d["q"] = s.q;
+        d["reference_overlap"] = s.reference_overlap;
+        d["hertz_contact_time"] = s.hertz_contact_time;
+        return d;
+      },
+      py::arg("pair"), py::arg("model"), py::arg("velocity"),
+      "BP04 §8.3 scales of a viscoelastic collision: A [s], C0, kappa (8.70), g* (8.88) [m/s], q = (g/g*)^{1/5}, "
+      "xi0 (8.65) [m], the exact Hertz contact time [s].");
+
+  m.def(
+      "cor_series",
+      [](py::object q, const std::string& series) {
+        const auto s = series_named(series);
+        return map_values<double>(q, [&](double x) { return analytic::cor_series(x, s); });
+      },
+      py::arg("q"), py::arg("series") = "bounce",
+      "BP04 (8.89) truncated after a4, e(q) with q = (g/g*)^{1/5}; series = 'bounce' (master curve fit), "
+      "'bp04' (BP04's quoted a_k) or 'bp04-simple'.");
+  m.def(
+      "cor_pade",
+      [](py::object q, const std::string& coefficients) {
+        const auto d = pade_named(coefficients);
+        return map_values<double>(q, [&](double x) { return analytic::cor_pade(x, d); });
+      },
+      py::arg("q"), py::arg("coefficients") = "bp04-printed",
+      "BP04 (8.92) Pade form e(q), q = (g/g*)^{1/5}; coefficients = 'bp04-printed' ((8.93) as printed, BP04 "
+      "Fig 8.2) or (8.93) applied to the a_k of 'bp04', 'bp04-simple' or 'bounce'.");
+
+  m.def(
+      "contact_laws",
+      [] {
+        py::list out;
+        for (const auto& info : contact::contact_laws()) {
+          py::dict d;
+          d["name"] = info.name;
+          d["needs_surface_energy"] = info.needs_surface_energy;
+          d["summary"] = info.summary;
+          d["references"] = info.references;
+          out.append(d);
+        }
+        return out;
+      },
+      "The static contact laws: name, needs_surface_energy, summary, references.");
+  py::class_<PyContactLaw>(m, "ContactLaw",
+                           "A static contact law for a pair: hertz, jkr, dmt or maugis (docs/contact.md).")
+      .def(py::init([](const Pair& pair, const std::string& law, double z0) {
+             require_finite("z0", z0);
+             if (z0 <= 0.0) throw InvalidArgument("z0", std::to_string(z0), "z0 > 0 m");
+             return PyContactLaw{std::shared_ptr<contact::ContactLaw>(
+                 contact::make_contact_law(law, pair, contact::LawOptions{z0}))};
+           }),
+           py::arg("pair"), py::arg("law") = "hertz", py::kw_only(), py::arg("z0") = 0.2e-9)
+      .def_property_readonly("name", [](const PyContactLaw& l) { return std::string(l.law->name()); })
+      .def(
+          "at_force", [](const PyContactLaw& l, py::object f) { return contact_points(l, &contact::ContactLaw::at_force, f); },
+          py::arg("force"),
+          "Stable state at normal force(s) F [N] (force control): dict of contact_radius [m], overlap [m], force [N]")
+      .def(
+          "at_overlap",
+          [](const PyContactLaw& l, py::object d) { return contact_points(l, &contact::ContactLaw::at_overlap, d); },
+          py::arg("overlap"), "Stable state at overlap(s) delta [m] (displacement control)")
+      .def(
+          "at_contact_radius",
+          [](const PyContactLaw& l, py::object a) {
+            return contact_points(l, &contact::ContactLaw::at_contact_radius, a);
+          },
+          py::arg("contact_radius"), "The point of the law's curve with contact radius a [m] (stable or not)")
+      .def_property_readonly(
+          "adhesion",
+          [](const PyContactLaw& l) -> py::object {
+            const auto a = l.law->adhesion();
+            if (!a) return py::none();
+            py::dict d;
+            d["pull_off_force"] = a->pull_off_force;
+            d["pull_off_contact_radius"] = a->pull_off_contact_radius;
+            d["zero_load_contact_radius"] = a->zero_load_contact_radius;
+            d["zero_load_overlap"] = a->zero_load_overlap;
+            d["separation_overlap"] = a->separation_overlap;
+            d["separation_contact_radius"] = a->separation_contact_radius;
+            return d;
+          },
+          "Pull-off and zero-load quantities (dict), None for hertz")
+      .def("__repr__", [](const PyContactLaw& l) { return "<bounce.ContactLaw " + std::string(l.law->name()) + ">"; });
 
   m.def(
       "sticking_velocity",

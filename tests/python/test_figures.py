@@ -1,0 +1,49 @@
+"""Every figure function runs and writes a non-empty PNG and SVG (coarse grids: quick=True)."""
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+from bounce import figures, plot
+
+
+@pytest.mark.parametrize("name", list(plot.FIGURES))
+def test_figure_writes_png_and_svg(name, tmp_path: pathlib.Path):
+    written = figures.write_figures(tmp_path, [name], quick=True, progress=lambda s: None, dpi=60)
+    assert [p.name for p in written] == [f"{name}.png", f"{name}.svg"]
+    png, svg = written
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and png.stat().st_size > 10_000
+    text = svg.read_text()
+    assert text.lstrip().startswith("<?xml") and "</svg>" in text
+    # The caption names the paper's figure.
+    paper = {"bshp96": "BSHP96 Fig.", "bp04": "BP04 Fig.", "k13": "K13 Fig."}[name.split("-")[0]]
+    assert paper in text
+
+
+def test_bridges_law_and_fitted_a():
+    assert plot.bridges_law(0.01) == pytest.approx(0.32)  # 1 cm/s
+    pair = plot.b.Pair(material="ice-bshp96", radius=0.01)
+    a = plot.dissipative_constant_for(pair, 0.32e-2)
+    g_star = plot.b.viscoelastic_scales(pair, plot.b.Model(A=a), 1.0)["characteristic_velocity"]
+    assert g_star == pytest.approx(0.32e-2, rel=1e-12)  # g* ~ A^-5 exactly (BP04 (8.88))
+    with pytest.raises(ValueError):
+        plot.dissipative_constant_for(pair, 0.0)
+
+
+def test_command_rejects_unknown_figure(tmp_path: pathlib.Path):
+    r = subprocess.run([sys.executable, "-m", "bounce.figures", "--out", str(tmp_path), "--only", "k13-fig9"],
+                       capture_output=True, text=True)
+    assert r.returncode == 2
+    assert "figure = k13-fig9 is invalid: expected one of" in r.stderr
+
+
+def test_docs_python_tour_runs(tmp_path: pathlib.Path, monkeypatch):
+    """docs/python.md's tour, run as written (it ends in two figures)."""
+    import re
+    docs = pathlib.Path(__file__).resolve().parents[2] / "docs" / "python.md"
+    code = re.search(r"```python\n(.*?)```", docs.read_text(), re.S).group(1)
+    monkeypatch.chdir(tmp_path)
+    exec(compile(code, str(docs), "exec"), {})
+    assert (tmp_path / "cor.png").stat().st_size > 10_000
+    assert (tmp_path / "k13-fig4.png").stat().st_size > 10_000
