@@ -32,6 +32,20 @@ from ._bounce import (  # noqa: F401
     viscoelastic_scales,
 )
 
+
+
+def curve(pair: Pair, model: Model, velocities, **options):
+    """The COR curve over an array of impact speeds [m/s] (the CLI's `bounce curve`).
+
+    The same as ``collide(pair, model, numpy.asarray(velocities, float), **options)``: a dict
+    of arrays (velocity, cor, stick, contact_time, max_overlap, bulk_dissipated,
+    crack_dissipated; cor_tangential with a tangential_velocity), the loop in C++.
+    """
+    import numpy as np
+
+    return collide(pair, model, np.asarray(velocities, dtype=float), **options)
+
+
 __all__ = [
     "ContactLaw",
     "Model",
@@ -43,6 +57,7 @@ __all__ = [
     "collide_grains",
     "contact_laws",
     "cor_pade",
+    "curve",
     "cor_series",
     "master_cor",
     "material",

@@ -110,3 +110,14 @@ def test_bad_arguments_raise_value_error(call):
         call()
     assert MESSAGE.match(str(info.value)), str(info.value)
     assert "\n" not in str(info.value)
+
+
+def test_curve_equals_cli_curve():
+    pair = bounce.Pair(material="water-ice", radius=1e-6)
+    model = bounce.Model("krijt", tvis=1e-11)
+    py = bounce.curve(pair, model, [1.0, 4.0, 8.0])
+    rows = list(csv.DictReader(io.StringIO(run("curve", *ICE, "--model", "krijt", "--tvis", "1e-11",
+                                               "--velocities", "1:8:3", "--csv"))))
+    # 1:8:3 is 1, 4.5, 8 (linear); compare the end points, the same library call.
+    assert float(rows[0]["cor"]) == py["cor"][0] and float(rows[-1]["cor"]) == py["cor"][-1]
+    assert [r["outcome"] == "stick" for r in rows][0] == py["stick"][0]
