@@ -1,8 +1,10 @@
 """The papers' figures, regenerated from the library (matplotlib).
 
-Each function computes its curves with :mod:`bounce` and returns a
-:class:`matplotlib.figure.Figure` with axes in named units, a legend and a caption
-naming the paper's figure. ``quick=True`` uses coarser grids (for tests); the
+Three building blocks draw on axes you give (or on a new figure's): ``cor_curve`` (e
+against impact speed), ``contact_history`` (a and F_E against the approach, beside Hertz
+and JKR) and ``energy_budget`` (the energies against time). Each figure function computes
+its curves with :mod:`bounce` and returns a :class:`matplotlib.figure.Figure` with axes
+in named units, a legend and a caption naming the paper's figure. ``quick=True`` uses coarser grids (for tests); the
 figures in ``make demo`` use the full ones. ``python3 -m bounce.figures`` writes
 them all as PNG and SVG (docs/figures.md says how each compares with the paper).
 
@@ -17,6 +19,7 @@ import textwrap
 from typing import Callable
 
 import numpy as np
+from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from . import _bounce as b
@@ -178,47 +181,59 @@ def bp04_fig8_2(quick: bool = False) -> Figure:
 
 # --- K13 -----------------------------------------------------------------------------------
 
-def _k13_contact_figure(velocity: float, follow_time: float, quick: bool, caption: str) -> Figure:
-    pair, model = _k13_pair(), _k13_model()
-    run = b.collide(pair, model, velocity, trajectory=True, trajectory_points=200 if quick else 2000,
-                    follow_time=follow_time)
+def contact_history(pair: b.Pair, model: b.Model, velocity: float, axes: tuple[Axes, Axes] | None = None,
+                    follow_time: float = 0.0, points: int = 2000) -> tuple[Axes, Axes]:
+    """a(delta) and F_E(delta) of one collision beside the static Hertz (and, with adhesion, JKR) curves.
+
+    Draws on ``axes`` (left, right), or on a new figure's; returns them. With a surface
+    energy: the JKR curve (both branches), its equilibrium (star) and the snap-on at
+    delta = 0 (dotted), as in K13 Figs 2 and 3. Units: delta in nm, a in um, F_E in uN.
+    """
+    run = b.collide(pair, model, velocity, trajectory=True, trajectory_points=points, follow_time=follow_time)
     t = run["trajectory"]
-    jkr = b.ContactLaw(pair, "jkr")
-    hertz = b.ContactLaw(pair, "hertz")
-    a_max = 1.15 * float(np.max(t["contact_radius"]))
-    jkr_curve = jkr.at_contact_radius(np.linspace(0.0, a_max, 400))
-    delta_max = 1.1 * float(np.max(t["overlap"]))
-    hertz_curve = hertz.at_overlap(np.linspace(0.0, delta_max, 200))
-    equilibrium = jkr.adhesion
-    snap = jkr.at_overlap(0.0)  # where the stable JKR branch meets delta = 0 (snap-on)
+    if axes is None:
+        fig = _figure(11.0, 4.4)
+        axes = (fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2))
+    left, right = axes
     nm, um, uN = 1e9, 1e6, 1e6
-    fig = _figure(11.0, 4.4)
-    left, right = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
-    left.plot(t["overlap"] * nm, t["contact_radius"] * um, "-", color="C3", lw=1.2, label=f"bounce, {velocity:g} m/s")
-    left.plot(hertz_curve["overlap"] * nm, hertz_curve["contact_radius"] * um, "--", color="C0", label="Hertz (4)")
-    left.plot(jkr_curve["overlap"] * nm, jkr_curve["contact_radius"] * um, "-.", color="k", label="JKR (8)")
-    left.plot([0, 0], [0, snap["contact_radius"] * um], ":", color="k", lw=1)
-    left.plot(equilibrium["zero_load_overlap"] * nm, equilibrium["zero_load_contact_radius"] * um, "*", ms=12,
-              color="C1", label="JKR equilibrium")
-    left.set_xlabel(r"mutual approach $\delta$ [nm]")
-    left.set_ylabel(r"contact radius $a$ [$\mu$m]")
-    left.set_xlim(right=delta_max * nm)
-    left.set_ylim(0, a_max * um)
-    left.legend(fontsize=8, loc="lower right")
-    right.plot(t["overlap"] * nm, t["elastic_force"] * uN, "-", color="C3", lw=1.2, label=f"bounce, {velocity:g} m/s")
-    right.plot(hertz_curve["overlap"] * nm, hertz_curve["force"] * uN, "--", color="C0", label="Hertz (5)")
-    right.plot(jkr_curve["overlap"] * nm, jkr_curve["force"] * uN, "-.", color="k", label="JKR (9)")
-    right.plot([0, 0], [0, snap["force"] * uN], ":", color="k", lw=1)
-    right.plot(equilibrium["zero_load_overlap"] * nm, 0.0, "*", ms=12, color="C1", label="JKR equilibrium")
+    a_max = 1.15 * float(np.max(t["contact_radius"]))
+    delta_max = 1.1 * float(np.max(t["overlap"]))
+    hertz = b.ContactLaw(pair, "hertz").at_overlap(np.linspace(0.0, delta_max, 200))
+    label = f"bounce, {velocity:g} m/s"
+    left.plot(t["overlap"] * nm, t["contact_radius"] * um, "-", color="C3", lw=1.2, label=label)
+    right.plot(t["overlap"] * nm, t["elastic_force"] * uN, "-", color="C3", lw=1.2, label=label)
+    left.plot(hertz["overlap"] * nm, hertz["contact_radius"] * um, "--", color="C0", label="Hertz (4)")
+    right.plot(hertz["overlap"] * nm, hertz["force"] * uN, "--", color="C0", label="Hertz (5)")
+    if pair.surface_energy is not None:
+        law = b.ContactLaw(pair, "jkr")
+        jkr = law.at_contact_radius(np.linspace(0.0, a_max, 400))
+        equilibrium = law.adhesion
+        snap = law.at_overlap(0.0)  # where the stable JKR branch meets delta = 0 (snap-on)
+        left.plot(jkr["overlap"] * nm, jkr["contact_radius"] * um, "-.", color="k", label="JKR (8)")
+        right.plot(jkr["overlap"] * nm, jkr["force"] * uN, "-.", color="k", label="JKR (9)")
+        left.plot([0, 0], [0, snap["contact_radius"] * um], ":", color="k", lw=1)
+        right.plot([0, 0], [0, snap["force"] * uN], ":", color="k", lw=1)
+        left.plot(equilibrium["zero_load_overlap"] * nm, equilibrium["zero_load_contact_radius"] * um, "*", ms=12,
+                  color="C1", label="JKR equilibrium")
+        right.plot(equilibrium["zero_load_overlap"] * nm, 0.0, "*", ms=12, color="C1", label="JKR equilibrium")
     right.axhline(0, color="0.6", lw=0.5)
-    right.set_xlabel(r"mutual approach $\delta$ [nm]")
+    for ax in axes:
+        ax.set_xlabel(r"mutual approach $\delta$ [nm]")
+        ax.set_xlim(right=delta_max * nm)
+    left.set_ylabel(r"contact radius $a$ [$\mu$m]")
+    left.set_ylim(0, a_max * um)
     right.set_ylabel(r"elastic force $F_E$ [$\mu$N]")
-    right.set_xlim(right=delta_max * nm)
-    f_top = 1.1 * float(np.max(t["elastic_force"]))
-    right.set_ylim(top=f_top * uN)
+    right.set_ylim(top=1.1 * float(np.max(t["elastic_force"])) * uN)
+    left.legend(fontsize=8, loc="lower right")
     right.legend(fontsize=8, loc="upper left")
-    _caption(fig, caption)
-    return fig
+    return axes
+
+
+def _k13_contact_figure(velocity: float, follow_time: float, quick: bool, caption: str) -> Figure:
+    left, _ = contact_history(_k13_pair(), _k13_model(), velocity, follow_time=follow_time,
+                              points=200 if quick else 2000)
+    _caption(left.figure, caption)
+    return left.figure
 
 
 def k13_fig2(quick: bool = False) -> Figure:
@@ -236,29 +251,40 @@ def k13_fig3(quick: bool = False) -> Figure:
                                "grains spiral towards the JKR equilibrium (star).")
 
 
+def cor_curve(pair: b.Pair, model: b.Model, velocities: np.ndarray, ax: Axes | None = None,
+              label: str | None = None, **style: object) -> Axes:
+    """The coefficient of restitution against impact speed [m/s] (0 where the grains stick), log x axis.
+
+    Draws on ``ax`` or a new figure's axes; returns it. ``style`` goes to ``Axes.plot``.
+    """
+    v = np.asarray(velocities, dtype=float)
+    run = b.collide(pair, model, v)
+    if ax is None:
+        ax = _figure().add_subplot()
+    ax.plot(v, run["cor"], label=label if label is not None else model.name, **style)
+    ax.set_xscale("log")
+    ax.set_ylim(0, 1.02)
+    ax.set_xlabel(r"impact velocity $v_{in}$ [m s$^{-1}$]")
+    ax.set_ylabel("coefficient of restitution")
+    return ax
+
+
 def k13_fig4(quick: bool = False) -> Figure:
     """K13 Fig 4: e_A against impact velocity with e_JKR (24), e_D (26), e_I (27)."""
     pair, model = _k13_pair(), _k13_model()
     v = np.geomspace(0.1, 100.0, 25 if quick else 120)
-    run = b.collide(pair, model, v)
+    ax = cor_curve(pair, model, v, label="bounce (K13 model)", color="C3", lw=1.6)
     closed = b.closed_forms(pair, model, v)
     v_s = b.sticking_velocity(pair, model)
-    fig = _figure()
-    ax = fig.add_subplot()
-    ax.plot(v, run["cor"], "-", color="C3", lw=1.6, label="bounce (K13 model)")
     ax.plot(v, closed["e_jkr"], "--", color="k", label=r"$e_{JKR}$ (24)")
     ax.plot(v, closed["e_d"], ":", color="C0", label=r"$e_D$ (26)")
     ax.plot(v, closed["e_i"], "-.", color="C2", label=r"$e_I$ (27)")
     ax.axvline(v_s, color="0.5", lw=0.6)
     ax.annotate(f"$v_s$ = {v_s:.2f} m/s", (v_s, 0.05), xytext=(4, 0), textcoords="offset points", fontsize=8)
-    ax.set_xscale("log")
-    ax.set_ylim(0, 1.02)
-    ax.set_xlabel(r"impact velocity $v_{in}$ [m s$^{-1}$]")
-    ax.set_ylabel("coefficient of restitution")
     ax.legend(loc="lower right", fontsize=8)
-    _caption(fig, "K13 Fig. 4: COR of head-on collisions against impact velocity (solid red), water ice, "
-                  "T_vis = 1e-11 s, R_eff = 1.02 um, z0 = 0.088 nm, with the estimates (24), (26), (27).")
-    return fig
+    _caption(ax.figure, "K13 Fig. 4: COR of head-on collisions against impact velocity (solid red), water ice, "
+                        "T_vis = 1e-11 s, R_eff = 1.02 um, z0 = 0.088 nm, with the estimates (24), (26), (27).")
+    return ax.figure
 
 
 def k13_fig5(quick: bool = False) -> Figure:
@@ -309,14 +335,17 @@ def _sticking_or_nan(pair: b.Pair, model: b.Model) -> float:
         return float("nan")
 
 
-def _k13_energy_figure(velocity: float, follow_time: float, quick: bool, caption: str,
-                       legend: dict[str, object]) -> Figure:
-    run = b.collide(_k13_pair(), _k13_model(), velocity, trajectory=True, trajectory_points=200 if quick else 2000,
-                    follow_time=follow_time)
+def energy_budget(pair: b.Pair, model: b.Model, velocity: float, ax: Axes | None = None, follow_time: float = 0.0,
+                  points: int = 2000) -> Axes:
+    """U_K, U_E, U_S, U_CD, U_BD against time [ns], normalised to the initial kinetic energy (K13 appendix C).
+
+    Draws on ``ax`` or a new figure's axes; returns it.
+    """
+    run = b.collide(pair, model, velocity, trajectory=True, trajectory_points=points, follow_time=follow_time)
     t = run["trajectory"]
     u0 = run["energy"]["initial_kinetic"]
-    fig = _figure()
-    ax = fig.add_subplot()
+    if ax is None:
+        ax = _figure().add_subplot()
     ns = t["time"] * 1e9
     for key, label, style in (("kinetic", "$U_K$", "-"), ("elastic", "$U_E$", "--"), ("surface", "$U_S$", "-."),
                               ("crack_dissipated", "$U_{CD}$", ":"), ("bulk_dissipated", "$U_{BD}$", "-")):
@@ -324,9 +353,15 @@ def _k13_energy_figure(velocity: float, follow_time: float, quick: bool, caption
     ax.axhline(0, color="0.6", lw=0.5)
     ax.set_xlabel("time [ns]")
     ax.set_ylabel("energy / initial kinetic energy")
+    return ax
+
+
+def _k13_energy_figure(velocity: float, follow_time: float, quick: bool, caption: str,
+                       legend: dict[str, object]) -> Figure:
+    ax = energy_budget(_k13_pair(), _k13_model(), velocity, follow_time=follow_time, points=200 if quick else 2000)
     ax.legend(fontsize=8, **legend)
-    _caption(fig, caption)
-    return fig
+    _caption(ax.figure, caption)
+    return ax.figure
 
 
 def k13_figC1(quick: bool = False) -> Figure:

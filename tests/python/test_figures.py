@@ -47,3 +47,24 @@ def test_docs_python_tour_runs(tmp_path: pathlib.Path, monkeypatch):
     exec(compile(code, str(docs), "exec"), {})
     assert (tmp_path / "cor.png").stat().st_size > 10_000
     assert (tmp_path / "k13-fig4.png").stat().st_size > 10_000
+
+
+def test_building_blocks_draw_on_given_axes(tmp_path: pathlib.Path):
+    from matplotlib.figure import Figure
+    import numpy as np
+    import bounce
+
+    fig = Figure()
+    ax = fig.add_subplot(2, 2, 1)
+    ice = bounce.Pair(material="ice-bshp96", radius=0.01)  # no surface energy: Hertz only
+    assert plot.cor_curve(ice, bounce.Model(A=1e-6), np.geomspace(1e-3, 1, 5), ax=ax) is ax
+    assert len(ax.lines) == 1 and ax.get_xscale() == "log"
+    axes = (fig.add_subplot(2, 2, 2), fig.add_subplot(2, 2, 3))
+    assert plot.contact_history(ice, bounce.Model(A=1e-6), 0.1, axes=axes, points=50) == axes
+    assert [line.get_label() for line in axes[0].lines] == ["bounce, 0.1 m/s", "Hertz (4)"]
+    e = plot.energy_budget(bounce.Pair(material="water-ice", radius=1e-6), bounce.Model("krijt", tvis=1e-11), 8.0,
+                           ax=fig.add_subplot(2, 2, 4), points=50)
+    kinetic = e.lines[0].get_ydata()
+    assert kinetic[0] == 1.0 and 0 < kinetic[-1] < 1  # normalised to U_K(0); a bounce keeps some
+    fig.savefig(tmp_path / "blocks.png")
+    assert (tmp_path / "blocks.png").stat().st_size > 10_000
