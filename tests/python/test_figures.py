@@ -38,15 +38,17 @@ def test_command_rejects_unknown_figure(tmp_path: pathlib.Path):
     assert "figure = k13-fig9 is invalid: expected one of" in r.stderr
 
 
-def test_docs_python_tour_runs(tmp_path: pathlib.Path, monkeypatch):
-    """docs/python.md's tour, run as written (it ends in two figures)."""
+@pytest.mark.parametrize("page,images", [("python.md", ["cor.png", "k13-fig4.png"]),
+                                         ("figures.md", ["k13-fig4.png", "silicon-energies.png"])])
+def test_docs_examples_run(page, images, tmp_path: pathlib.Path, monkeypatch):
+    """The Python examples of docs/python.md (the tour) and docs/figures.md, run as written."""
     import re
-    docs = pathlib.Path(__file__).resolve().parents[2] / "docs" / "python.md"
+    docs = pathlib.Path(__file__).resolve().parents[2] / "docs" / page
     code = re.search(r"```python\n(.*?)```", docs.read_text(), re.S).group(1)
     monkeypatch.chdir(tmp_path)
     exec(compile(code, str(docs), "exec"), {})
-    assert (tmp_path / "cor.png").stat().st_size > 10_000
-    assert (tmp_path / "k13-fig4.png").stat().st_size > 10_000
+    for image in images:
+        assert (tmp_path / image).stat().st_size > 10_000
 
 
 def test_building_blocks_draw_on_given_axes(tmp_path: pathlib.Path):
