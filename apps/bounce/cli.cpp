@@ -385,24 +385,8 @@ CollideOptions ModelOptions::collide_options() const {
 }
 
 nlohmann::json adhesive_closed_forms(const Pair& pair, const models::ModelSpec& spec, double v) {
-  const AdhesiveClosedForms c = bounce::adhesive_closed_forms(pair, spec, v);
   nlohmann::json j;
-  j["sticking_velocity_jkr"] = c.sticking_velocity_jkr;
-  j["sticking_velocity_k13_25"] = c.sticking_velocity_k13_25;
-  j["e_jkr"] = c.e_jkr;
-  j["hertz_time_k13_22"] = c.hertz_time_k13_22;
-  j["tabor_parameter"] = c.tabor_parameter;
-  const auto put = [&j](const char* key, const std::optional<double>& x) {
-    if (x) j[key] = *x;
-  };
-  put("dissipative_constant", c.dissipative_constant);
-  put("e_d", c.e_d);
-  put("e_i", c.e_i);
-  put("tensile_work_bp04_8_95", c.tensile_work_bp04_8_95);
-  put("e_ad_bp04_8_98", c.e_ad_bp04_8_98);
-  put("yield_velocity", c.yield_velocity);
-  put("e_plastic", c.e_plastic);
-  put("plastic_length_scale", c.plastic_length_scale);
+  for (const auto& [key, value] : named_values(bounce::adhesive_closed_forms(pair, spec, v))) j[key] = value;
   return j;
 }
 

@@ -253,22 +253,7 @@ py::object contact_points(const PyContactLaw& l, ContactAt at, py::object x) {
 
 py::dict closed_forms_dict(const AdhesiveClosedForms& c) {
   py::dict d;
-  d["sticking_velocity_jkr"] = c.sticking_velocity_jkr;
-  d["sticking_velocity_k13_25"] = c.sticking_velocity_k13_25;
-  d["e_jkr"] = c.e_jkr;
-  d["hertz_time_k13_22"] = c.hertz_time_k13_22;
-  d["tabor_parameter"] = c.tabor_parameter;
-  const auto put = [&d](const char* key, const std::optional<double>& x) {
-    if (x) d[key] = *x;
-  };
-  put("dissipative_constant", c.dissipative_constant);
-  put("e_d", c.e_d);
-  put("e_i", c.e_i);
-  put("tensile_work_bp04_8_95", c.tensile_work_bp04_8_95);
-  put("e_ad_bp04_8_98", c.e_ad_bp04_8_98);
-  put("yield_velocity", c.yield_velocity);
-  put("e_plastic", c.e_plastic);
-  put("plastic_length_scale", c.plastic_length_scale);
+  for (const auto& [key, value] : named_values(c)) d[py::str(key)] = value;
   return d;
 }
 

@@ -42,4 +42,24 @@ AdhesiveClosedForms adhesive_closed_forms(const Pair& pair, const models::ModelS
   return c;
 }
 
+std::vector<std::pair<std::string, double>> named_values(const AdhesiveClosedForms& c) {
+  std::vector<std::pair<std::string, double>> v = {{"sticking_velocity_jkr", c.sticking_velocity_jkr},
+                                                   {"sticking_velocity_k13_25", c.sticking_velocity_k13_25},
+                                                   {"e_jkr", c.e_jkr},
+                                                   {"hertz_time_k13_22", c.hertz_time_k13_22},
+                                                   {"tabor_parameter", c.tabor_parameter}};
+  const auto put = [&v](const char* key, const std::optional<double>& x) {
+    if (x) v.emplace_back(key, *x);
+  };
+  put("dissipative_constant", c.dissipative_constant);
+  put("e_d", c.e_d);
+  put("e_i", c.e_i);
+  put("tensile_work_bp04_8_95", c.tensile_work_bp04_8_95);
+  put("e_ad_bp04_8_98", c.e_ad_bp04_8_98);
+  put("yield_velocity", c.yield_velocity);
+  put("e_plastic", c.e_plastic);
+  put("plastic_length_scale", c.plastic_length_scale);
+  return v;
+}
+
 }  // namespace bounce

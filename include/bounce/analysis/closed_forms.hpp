@@ -3,6 +3,9 @@
 // (24)-(27), (28)-(29), (11) and BP04 (8.95), (8.98). The CLI's --closed-forms
 // columns, the Python closed_forms() and the K13 figures all read this one struct.
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/pair.hpp"
@@ -28,5 +31,9 @@ struct AdhesiveClosedForms {
 /// The closed forms for an adhesive model at impact speed `velocity` [m/s];
 /// InvalidArgument when the pair has no surface energy.
 AdhesiveClosedForms adhesive_closed_forms(const Pair& pair, const models::ModelSpec& model, double velocity);
+
+/// The values that are present, by the field names above (the keys of the CLI's
+/// "closed_forms" JSON and of Python's closed_forms()).
+std::vector<std::pair<std::string, double>> named_values(const AdhesiveClosedForms& forms);
 
 }  // namespace bounce
