@@ -192,12 +192,7 @@ int run_contact(const ContactOptions& o) {
     out.update(point_json(p));
   }
   if (auto a = law->adhesion()) {
-    out["pull_off_force"] = a->pull_off_force;
-    out["pull_off_contact_radius"] = a->pull_off_contact_radius;
-    out["zero_load_contact_radius"] = a->zero_load_contact_radius;
-    out["zero_load_overlap"] = a->zero_load_overlap;
-    out["separation_overlap"] = a->separation_overlap;
-    out["separation_contact_radius"] = a->separation_contact_radius;
+    for (const auto& [key, value] : contact::named_values(*a)) out[key] = value;
     add_tabor(out, pair, o.law, z0);
   }
   if (o.json) {

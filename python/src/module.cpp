@@ -484,12 +484,7 @@ PYBIND11_MODULE(_bounce, m) {
             const auto a = l.law->adhesion();
             if (!a) return py::none();
             py::dict d;
-            d["pull_off_force"] = a->pull_off_force;
-            d["pull_off_contact_radius"] = a->pull_off_contact_radius;
-            d["zero_load_contact_radius"] = a->zero_load_contact_radius;
-            d["zero_load_overlap"] = a->zero_load_overlap;
-            d["separation_overlap"] = a->separation_overlap;
-            d["separation_contact_radius"] = a->separation_contact_radius;
+            for (const auto& [key, value] : contact::named_values(*a)) d[py::str(key)] = value;
             return d;
           },
           "Pull-off and zero-load quantities (dict), None for hertz")

@@ -7,6 +7,15 @@
 
 namespace bounce::contact {
 
+std::vector<std::pair<std::string, double>> named_values(const AdhesionSummary& a) {
+  return {{"pull_off_force", a.pull_off_force},
+          {"pull_off_contact_radius", a.pull_off_contact_radius},
+          {"zero_load_contact_radius", a.zero_load_contact_radius},
+          {"zero_load_overlap", a.zero_load_overlap},
+          {"separation_overlap", a.separation_overlap},
+          {"separation_contact_radius", a.separation_contact_radius}};
+}
+
 const std::vector<LawInfo>& contact_laws() {
   static const std::vector<LawInfo> table = {
       {"hertz", false, "elastic, non-adhesive spheres", "BP04 (8.23)-(8.24), K13 (4)-(5)"},

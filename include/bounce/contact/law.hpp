@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "bounce/pair/pair.hpp"
@@ -31,6 +32,10 @@ struct AdhesionSummary {
   double separation_overlap = 0.0;        ///< most negative delta still in contact [m]
   double separation_contact_radius = 0.0; ///< a there (displacement control) [m]
 };
+
+/// The fields of an AdhesionSummary by name (the keys of `bounce contact --json` and of
+/// Python's ContactLaw.adhesion).
+std::vector<std::pair<std::string, double>> named_values(const AdhesionSummary& summary);
 
 class ContactLaw {
  public:
