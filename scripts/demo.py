@@ -178,7 +178,8 @@ def adhesive_section(runner: Runner, out: pathlib.Path) -> list[str]:
 
 def figures_section(runner: Runner, build_dir: pathlib.Path, out: pathlib.Path) -> list[str]:
     sys.path.insert(0, str(build_dir / "python"))
-    from bounce import figures, plot  # the package of this build
+    import bounce  # the package of this build
+    from bounce import figures, plot
 
     written = figures.write_figures(out / "figures", progress=runner.progress)
     lines = ["## Figures (`figures/`, PNG and SVG)", "",
@@ -186,7 +187,7 @@ def figures_section(runner: Runner, build_dir: pathlib.Path, out: pathlib.Path) 
              "paper.", "", "| file | figure |", "|---|---|"]
     for name, function in plot.FIGURES.items():
         lines.append(f"| `{name}.png`, `.svg` | {function.__doc__.strip().splitlines()[0]} |")
-    ice = plot.b.Pair(material=plot.BSHP96_MATERIAL, radius=plot.BSHP96_RADIUS)
+    ice = bounce.Pair(material=plot.BSHP96_MATERIAL, radius=plot.BSHP96_RADIUS)
     a = plot.dissipative_constant_for(ice, plot.BP04_ICE_CHARACTERISTIC_VELOCITY)
     lines += ["", f"BSHP96 Fig. 1 uses A = {a:.4g} s, the A for which BP04 (8.88) gives g* = 0.32 cm/s for two "
               "1 cm ice spheres (BSHP96 fit A to the same data but do not print it).", ""]

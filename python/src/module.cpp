@@ -4,6 +4,7 @@
 // message naming the parameter, its value and the allowed range), NumericalError ->
 // RuntimeError.
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -168,10 +169,13 @@ py::dict collide_many(const Pair& pair, const models::ModelSpec& model, const Ar
   return d;
 }
 
+// A Python int or float (numpy float64 included): the scalar form of the calls that take arrays.
+bool is_number(const py::handle& x) { return py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x); }
+
 // f applied to a float (-> float) or elementwise to an array (-> array of its shape).
 template <class R, class F>
 py::object map_values(py::object x, F f) {
-  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) return py::cast(f(x.cast<double>()));
+  if (is_number(x)) return py::cast(f(x.cast<double>()));
   const Array a = x.cast<Array>();
   py::array_t<R> out(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()));
   for (py::ssize_t i = 0; i < a.size(); ++i) out.mutable_data()[i] = f(a.data()[i]);
@@ -232,7 +236,7 @@ py::object contact_points(const PyContactLaw& l, ContactAt at, py::object x) {
     d["force"] = p.force;
     return d;
   };
-  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) {
+  if (is_number(x)) {
     return point_dict(((*l.law).*at)(x.cast<double>()));
   }
   const Array in = x.cast<Array>();
@@ -343,7 +347,7 @@ PYBIND11_MODULE(_bounce, m) {
       [](const Pair& pair, const models::ModelSpec& model, py::object velocity, double tangential_velocity,
          const std::string& method, bool trajectory, int trajectory_points, double follow_time) -> py::object {
         CollideOptions o = options(method, tangential_velocity);
-        const bool scalar = py::isinstance<py::float_>(velocity) || py::isinstance<py::int_>(velocity);
+        const bool scalar = is_number(velocity);
         if (trajectory) {
           if (!scalar) throw InvalidArgument("trajectory", "True", "a single velocity (not an array)");
           if (trajectory_points < 2) {
@@ -352,9 +356,7 @@ PYBIND11_MODULE(_bounce, m) {
           o.record_trajectory = true;
           o.trajectory_points = trajectory_points;
         }
-        require_finite("follow_time", follow_time);
-        if (follow_time < 0.0) throw InvalidArgument("follow_time", std::to_string(follow_time), ">= 0 s");
-        o.follow_time = follow_time;
+        o.follow_time = require_non_negative("follow_time", follow_time, "follow time [s]");
         if (scalar) {
           const double v = velocity.cast<double>();
           dynamics::CollisionOutcome out;
@@ -381,20 +383,20 @@ PYBIND11_MODULE(_bounce, m) {
   m.def(
       "closed_forms",
       [](const Pair& pair, const models::ModelSpec& model, py::object velocity) -> py::object {
-        if (py::isinstance<py::float_>(velocity) || py::isinstance<py::int_>(velocity)) {
+        if (is_number(velocity)) {
           return closed_forms_dict(adhesive_closed_forms(pair, model, velocity.cast<double>()));
         }
         const Array v = velocity.cast<Array>();
-        std::vector<py::ssize_t> shape(v.shape(), v.shape() + v.ndim());
-        py::dict columns;
+        const std::vector<py::ssize_t> shape(v.shape(), v.shape() + v.ndim());
+        std::map<std::string, Array> columns;  // the keys depend on the model, not on the speed
         for (py::ssize_t i = 0; i < v.size(); ++i) {
-          const py::dict row = closed_forms_dict(adhesive_closed_forms(pair, model, v.data()[i]));
-          for (auto item : row) {
-            if (!columns.contains(item.first)) columns[item.first] = Array(shape);
-            columns[item.first].cast<Array>().mutable_data()[i] = item.second.cast<double>();
+          for (const auto& [key, value] : named_values(adhesive_closed_forms(pair, model, v.data()[i]))) {
+            columns.try_emplace(key, shape).first->second.mutable_data()[i] = value;
           }
         }
-        return columns;
+        py::dict d;
+        for (const auto& [key, column] : columns) d[py::str(key)] = column;
+        return d;
       },
       py::arg("pair"), py::arg("model"), py::arg("velocity"),
       "The closed forms beside an adhesive collision: K13 (22) hertz_time_k13_22, (24) e_jkr, (25) "
@@ -457,8 +459,7 @@ PYBIND11_MODULE(_bounce, m) {
   py::class_<PyContactLaw>(m, "ContactLaw",
                            "A static contact law for a pair: hertz, jkr, dmt or maugis (docs/contact.md).")
       .def(py::init([](const Pair& pair, const std::string& law, double z0) {
-             require_finite("z0", z0);
-             if (z0 <= 0.0) throw InvalidArgument("z0", std::to_string(z0), "z0 > 0 m");
+             require_positive("z0", z0, "equilibrium separation z0 [m]");
              return PyContactLaw{std::shared_ptr<contact::ContactLaw>(
                  contact::make_contact_law(law, pair, contact::LawOptions{z0}))};
            }),

@@ -23,9 +23,10 @@ def test_figure_writes_png_and_svg(name, tmp_path: pathlib.Path):
 
 def test_bridges_law_and_fitted_a():
     assert plot.bridges_law(0.01) == pytest.approx(0.32)  # 1 cm/s
-    pair = plot.b.Pair(material="ice-bshp96", radius=0.01)
+    import bounce
+    pair = bounce.Pair(material="ice-bshp96", radius=0.01)
     a = plot.dissipative_constant_for(pair, 0.32e-2)
-    g_star = plot.b.viscoelastic_scales(pair, plot.b.Model(A=a), 1.0)["characteristic_velocity"]
+    g_star = bounce.viscoelastic_scales(pair, bounce.Model(A=a), 1.0)["characteristic_velocity"]
     assert g_star == pytest.approx(0.32e-2, rel=1e-12)  # g* ~ A^-5 exactly (BP04 (8.88))
     with pytest.raises(ValueError):
         plot.dissipative_constant_for(pair, 0.0)
