@@ -14,12 +14,9 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "bounce/analytic/master_curve.hpp"
-#include "bounce/dynamics/normal_collision.hpp"
-#include "bounce/models/normal_force.hpp"
+#include "unit_collision.hpp"
 
 namespace {
-
-const double kappa_to_a = 1.0 / (1.5 * std::pow(1.25, 0.6));  // BP04 (8.70) with C0 = m = g = 1
 
 int rhs(sunrealtype, N_Vector y, N_Vector dydt, void* data) {
   const double kappa = *static_cast<double*>(data);
@@ -96,20 +93,11 @@ void cvode(benchmark::State& state, int method) {
 }
 
 void odeint(benchmark::State& state) {
-  const double kappa = 0.3, tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
-  const auto force = bounce::models::make_viscoelastic_force({1.0, 1.0, 1.0}, kappa * kappa_to_a);
+  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
   bounce::dynamics::NormalCollisionOptions options;
   options.integration.relative_tolerance = tolerance;
   options.integration.absolute_tolerance = tolerance;
-  double e = 0.0;
-  long steps = 0;
-  for (auto _ : state) {
-    const auto out = bounce::dynamics::integrate_normal_collision(*force, 1.0, 1.0, options);
-    e = out.cor;
-    steps = out.steps;
-  }
-  state.counters["error"] = std::abs(e - bounce::analytic::master_cor(kappa, bounce::dynamics::EndRule::overlap));
-  state.counters["steps"] = static_cast<double>(steps);
+  bench::time_unit_collision(state, 0.3, options);
 }
 
 }  // namespace
