@@ -1,5 +1,6 @@
-// `bounce table`: eps^N(g) with the outcome as a table for other simulators (JSON, CSV or
-// a self-contained C header; docs/tables.md), or the value of a saved JSON table.
+// `bounce table`: eps^N(g) with the outcome, or eps^T(g^N, g^T), as a table for other
+// simulators (JSON, CSV or a self-contained C header; docs/tables.md), or the value of a
+// saved JSON table.
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -22,6 +23,7 @@ struct TableCommand {
   NumberOptions numbers;
   ModelOptions model;
   std::string velocities;
+  std::string tangential_velocities;
   bool json = false, csv = false;
   std::string c_header_prefix;
   std::string load;
@@ -48,11 +50,33 @@ std::array<double, 2> parse_interval(const std::string& option, const std::strin
   return {lo, hi};
 }
 
+int run_load_tangential(const TableCommand& c, const std::string& text) {
+  const TangentialTable t = [&] {
+    try {
+      return TangentialTable::from_json(text);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("--load", c.load, e.allowed());
+    }
+  }();
+  const double gn = c.numbers.require("--velocity", "the normal impact speed g^N at which to read the table");
+  const double gt = c.numbers.require("--tangential-velocity", "the tangential impact speed g^T at which to read the table");
+  const double cor = t.cor(gn, gt);
+  if (c.json) {
+    print_json({{"velocity", gn}, {"tangential_velocity", gt}, {"cor_tangential", cor}, {"breaks", t.breaks(gn, gt)},
+                {"bound", t.bound}, {"description", t.description}});
+  } else {
+    std::cout << fmt::format("cor_tangential {:.10g} ({} asperity breaks), table error <= {:g}\n", cor, t.breaks(gn, gt),
+                             t.bound);
+  }
+  return 0;
+}
+
 int run_load(const TableCommand& c) {
   std::ifstream in(c.load);
   if (!in) throw InvalidArgument("--load", c.load, "a readable JSON file written by bounce table --json");
   std::stringstream text;
   text << in.rdbuf();
+  if (is_tangential_table(text.str())) return run_load_tangential(c, text.str());
   const NormalTable t = [&] {
     try {
       return NormalTable::from_json(text.str());
@@ -85,26 +109,37 @@ int run_table(const TableCommand& c) {
   require_open_interval("bound", options.bound, 1e-10, 0.1, "interpolation error bound");
   Progress progress("bounce table", c.progress);
   options.progress = [&](std::size_t done, std::size_t total) { progress(done, total); };
-  const NormalTable t = build_normal_table(c.bodies.pair(), c.model.spec(), lo, hi, c.model.collide_options(), options);
-  if (c.json) std::cout << t.to_json() << '\n';
-  if (c.csv) std::cout << t.to_csv();
-  if (!c.c_header_prefix.empty()) std::cout << t.to_c_header(c.c_header_prefix);
+  auto write = [&c](const auto& t) {
+    if (c.json) std::cout << t.to_json() << '\n';
+    if (c.csv) std::cout << t.to_csv();
+    if (!c.c_header_prefix.empty()) std::cout << t.to_c_header(c.c_header_prefix);
+  };
+  if (!c.tangential_velocities.empty()) {
+    const auto [gt_lo, gt_hi] = parse_interval("--tangential-velocities", c.tangential_velocities);
+    write(build_tangential_table(c.bodies.pair(), c.model.spec(), lo, hi, gt_lo, gt_hi, c.model.collide_options(),
+                                 options));
+    return 0;
+  }
+  write(build_normal_table(c.bodies.pair(), c.model.spec(), lo, hi, c.model.collide_options(), options));
   return 0;
 }
 
 }  // namespace
 
 Command add_table_command(CLI::App& root) {
-  auto* app = root.add_subcommand("table", "eps^N(g) and the outcome as a table for other simulators (docs/tables.md)");
+  auto* app = root.add_subcommand(
+      "table", "eps^N(g) and the outcome, or eps^T(g^N, g^T), as a table for other simulators (docs/tables.md)");
   auto c = std::make_shared<TableCommand>(app);
-  app->add_option("--velocities", c->velocities, "the table's range LO:HI of impact speeds [m/s]");
+  app->add_option("--velocities", c->velocities, "the table's range LO:HI of (normal) impact speeds [m/s]");
+  app->add_option("--tangential-velocities", c->tangential_velocities,
+                  "a table of eps^T(g^N, g^T) (asperity law) with this range LO:HI of g^T [m/s]");
   app->add_flag("--json", c->json, "write the table as JSON (read back by --load and NormalTable::from_json)");
   app->add_flag("--csv", c->csv, "write the table's nodes as CSV");
   app->add_option("--c-header", c->c_header_prefix, "write a self-contained C99 header; PREFIX names its symbols");
   app->add_option("--load", c->load, "read a JSON table and print its value at --velocity");
   app->add_flag("--progress", c->progress, "report progress on stderr (automatic on a terminal)");
   c->numbers.add("--bound", "interpolation error to reach (default 1e-6)");
-  c->numbers.add("--velocity", "with --load: the impact speed [m/s]");
+  c->numbers.add("--velocity", "with --load: the (normal) impact speed [m/s]");
   return {app, [c]() { return run_table(*c); }};
 }
 

@@ -13,8 +13,15 @@
 #include "bounce/analysis/sticking.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
+#include "table_common.hpp"
 
 namespace bounce {
+
+using detail::c_array;
+using detail::check_prefix;
+using detail::check_range;
+using detail::describe;
+using detail::with_prefix;
 
 namespace {
 
@@ -219,26 +226,6 @@ PiecewiseCubic curve_from_json(const nlohmann::json& nodes) {
   return c;
 }
 
-std::string describe(const Pair& pair, const models::ModelSpec& model) {
-  return fmt::format("model {}, R1 = {:g} m, R2 = {:g} m, m_eff = {:.6g} kg, E* = {:.6g} Pa{}", model.name,
-                     pair.body1().radius, pair.body2().radius, pair.effective_mass(), pair.effective_modulus(),
-                     pair.surface_energy() ? fmt::format(", gamma = {:g} J/m^2", *pair.surface_energy()) : "");
-}
-
-void check_range(const char* name, double lo, double hi) {
-  require_positive(std::string(name) + "_min", lo, "a velocity > 0 m/s");
-  if (!(hi > lo) || !std::isfinite(hi)) {
-    throw InvalidArgument(std::string(name) + "_max", fmt::format("{:g}", hi), fmt::format("a velocity > {:g} m/s", lo));
-  }
-}
-
-// C text of a double array.
-std::string c_array(const std::string& type, const std::string& name, const std::vector<double>& v) {
-  std::string s = fmt::format("static const {} {}[{}] = {{", type, name, std::max<std::size_t>(v.size(), 1));
-  for (std::size_t i = 0; i < v.size(); ++i) s += fmt::format("{}{:.17g}", i % 4 ? ", " : (i ? ",\n  " : "\n  "), v[i]);
-  return s + "};\n";
-}
-
 // The C version of PiecewiseCubic (the same algorithm as above).
 constexpr const char* c_piecewise = R"(
 static double PREFIX_hermite(double x0, double f0, double d0, double x1, double f1, double d1, double x) {
@@ -285,20 +272,6 @@ static double PREFIX_curve(const double* x, const double* f, const double* d, co
   return PREFIX_in_piece(x, f, d, label, n, PREFIX_label_at(x, label, n, at), at);
 }
 )";
-
-std::string with_prefix(std::string text, const std::string& prefix) {
-  for (std::size_t p = text.find("PREFIX"); p != std::string::npos; p = text.find("PREFIX", p)) {
-    text.replace(p, 6, prefix);
-  }
-  return text;
-}
-
-void check_prefix(const std::string& prefix) {
-  const bool ok = !prefix.empty() && (std::isalpha(static_cast<unsigned char>(prefix[0])) || prefix[0] == '_') &&
-                  std::all_of(prefix.begin(), prefix.end(),
-                              [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-  if (!ok) throw InvalidArgument("prefix", prefix, "a C identifier");
-}
 
 }  // namespace
 

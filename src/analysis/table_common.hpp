@@ -1,0 +1,54 @@
+#pragma once
+// Private: what the eps^N and eps^T tables share (descriptions, ranges, C text).
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+#include "bounce/models/registry.hpp"
+#include "bounce/pair/pair.hpp"
+
+namespace bounce::detail {
+
+inline std::string describe(const Pair& pair, const models::ModelSpec& model) {
+  return fmt::format("model {}, R1 = {:g} m, R2 = {:g} m, m_eff = {:.6g} kg, E* = {:.6g} Pa{}", model.name,
+                     pair.body1().radius, pair.body2().radius, pair.effective_mass(), pair.effective_modulus(),
+                     pair.surface_energy() ? fmt::format(", gamma = {:g} J/m^2", *pair.surface_energy()) : "");
+}
+
+inline void check_range(const char* name, double lo, double hi) {
+  require_positive(std::string(name) + "_min", lo, "a velocity > 0 m/s");
+  if (!(hi > lo) || !std::isfinite(hi)) {
+    throw InvalidArgument(std::string(name) + "_max", fmt::format("{:g}", hi), fmt::format("a velocity > {:g} m/s", lo));
+  }
+}
+
+// C text of a double array.
+inline std::string c_array(const std::string& type, const std::string& name, const std::vector<double>& v) {
+  std::string s = fmt::format("static const {} {}[{}] = {{", type, name, std::max<std::size_t>(v.size(), 1));
+  for (std::size_t i = 0; i < v.size(); ++i) s += fmt::format("{}{:.17g}", i % 4 ? ", " : (i ? ",\n  " : "\n  "), v[i]);
+  return s + "};\n";
+}
+
+// Replaces every PREFIX in a C text by the user's prefix.
+inline std::string with_prefix(std::string text, const std::string& prefix) {
+  for (std::size_t p = text.find("PREFIX"); p != std::string::npos; p = text.find("PREFIX", p)) {
+    text.replace(p, 6, prefix);
+  }
+  return text;
+}
+
+inline void check_prefix(const std::string& prefix) {
+  const bool ok = !prefix.empty() && (std::isalpha(static_cast<unsigned char>(prefix[0])) || prefix[0] == '_') &&
+                  std::all_of(prefix.begin(), prefix.end(),
+                              [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  if (!ok) throw InvalidArgument("prefix", prefix, "a C identifier");
+}
+
+}  // namespace bounce::detail
