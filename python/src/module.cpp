@@ -537,6 +537,44 @@ PYBIND11_MODULE(_bounce, m) {
       .def_readonly("sticking_velocity", &NormalTable::sticking_velocity)
       .def_readonly("bound", &NormalTable::bound);
 
+  py::class_<TangentialTable>(m, "TangentialTable",
+                              "eps^T(g^N, g^T) of the asperity law (published form), to a stated error (docs/tables.md).")
+      .def_static(
+          "build",
+          [](const Pair& pair, const models::ModelSpec& model, double gn_min, double gn_max, double gt_min,
+             double gt_max, double bound) {
+            TableOptions t;
+            t.bound = bound;
+            py::gil_scoped_release release;
+            return build_tangential_table(pair, model, gn_min, gn_max, gt_min, gt_max, {}, t);
+          },
+          py::arg("pair"), py::arg("model"), py::arg("gn_min"), py::arg("gn_max"), py::arg("gt_min"), py::arg("gt_max"),
+          py::arg("bound") = 1e-6)
+      .def_static("from_json", &TangentialTable::from_json, py::arg("text"))
+      .def(
+          "cor",
+          [](const TangentialTable& t, py::object gn, py::object gt) {
+            return py::vectorize([&t](double n, double g) { return t.cor(n, g); })(gn, gt);
+          },
+          py::arg("velocity"), py::arg("tangential_velocity"),
+          "eps^T at (g^N, g^T) [m/s], numpy broadcasting (ValueError outside the table's range)")
+      .def(
+          "breaks",
+          [](const TangentialTable& t, py::object gn, py::object gt) {
+            return py::vectorize([&t](double n, double g) { return t.breaks(n, g); })(gn, gt);
+          },
+          py::arg("velocity"), py::arg("tangential_velocity"), "the number of asperities that break")
+      .def("to_json", &TangentialTable::to_json)
+      .def("to_csv", &TangentialTable::to_csv)
+      .def("to_c_header", &TangentialTable::to_c_header, py::arg("prefix"))
+      .def_readonly("gn_min", &TangentialTable::gn_min)
+      .def_readonly("gn_max", &TangentialTable::gn_max)
+      .def_readonly("gt_min", &TangentialTable::gt_min)
+      .def_readonly("gt_max", &TangentialTable::gt_max)
+      .def_readonly("bound", &TangentialTable::bound)
+      .def_readonly("checked_error", &TangentialTable::checked_error)
+      .def_readonly("check_points", &TangentialTable::check_points);
+
   m.def(
       "apply_restitution",
       [](const Pair& pair, std::array<double, 3> normal, std::array<double, 3> v1, std::array<double, 3> w1,

@@ -92,6 +92,26 @@ def test_table_against_direct_and_cli():
     assert c["nodes"] == json.loads(table.to_json())["nodes"]
 
 
+def test_tangential_table_against_direct_and_cli():
+    pair = bounce.Pair(material="ice-bshp96", radius=0.01)
+    model = bounce.Model(A=1e-6, friction=0.014142, asperity=1e-6)
+    table = bounce.TangentialTable.build(pair, model, 0.1, 3.0, 1e-3, 0.5)
+    rng = np.random.default_rng(5)
+    gn = 0.1 * 30.0 ** rng.random(30)
+    gt = 1e-3 * 500.0 ** rng.random(30)
+    direct = [bounce.collide(pair, model, float(n), tangential_velocity=float(t))["cor_tangential"] for n, t in zip(gn, gt)]
+    assert np.max(np.abs(table.cor(gn, gt) - direct)) <= table.bound
+    assert isinstance(table.cor(1.0, 0.01), float)
+    assert table.cor(np.array([1.0, 2.0]), 0.01).shape == (2,)  # numpy broadcasting
+    again = bounce.TangentialTable.from_json(table.to_json())
+    assert np.array_equal(again.cor(gn, gt), table.cor(gn, gt))
+    c = cli("table", "--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6", "--friction", "0.014142",
+            "--asperity", "1e-6", "--velocities", "0.1:3", "--tangential-velocities", "0.001:0.5")
+    assert c["nodes"] == json.loads(table.to_json())["nodes"]
+    with pytest.raises(ValueError, match="tangential_velocity"):
+        table.cor(1.0, 2.0)
+
+
 def test_rules_conserve_momentum():
     pair = bounce.Pair(material="steel", radius=1e-3, radius2=2e-3)
     r = bounce.apply_restitution(pair, [1, 0, 0], [-1, 0.3, 0.1], [0, 5, 0], [0.2, 0, 0], [0, 0, 3], 0.7, -0.3)
