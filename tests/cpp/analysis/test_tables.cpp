@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -107,18 +108,10 @@ TEST(Tables, CHeaderCompilesStandaloneAndAgrees) {
   fs::create_directories(dir);
   std::ofstream(dir / "k13_table.h") << t.to_c_header("k13");
   const std::vector<double> speeds = {0.5, 1.0, 3.0, t.sticking_velocity * (1 + 1e-10), 4.5, 6.0, 9.5, 10.0};
-  std::ofstream main(dir / "main.c");
-  main << "#include <stdio.h>\n#include \"k13_table.h\"\nint main(void) {\n";
-  for (double g : speeds) main << "  printf(\"%.17g %d\\n\", k13_cor(" << fmt::format("{:.17g}", g) << "), k13_sticks("
-                               << fmt::format("{:.17g}", g) << "));\n";
-  main << "  printf(\"%d\\n\", k13_cor(20.0) != k13_cor(20.0));\n  return 0;\n}\n";
-  main.close();
-  const std::string compile = std::string(BOUNCE_C_COMPILER) + " -std=c99 -pedantic -Wall -Wextra -Werror -o " +
-                              (dir / "main").string() + " " + (dir / "main.c").string() + " -lm";
-  ASSERT_EQ(std::system(compile.c_str()), 0) << compile;
-  const std::string run = (dir / "main").string() + " > " + (dir / "out.txt").string();
-  ASSERT_EQ(std::system(run.c_str()), 0);
-  std::ifstream out(dir / "out.txt");
+  std::string main = "#include <stdio.h>\n#include \"k13_table.h\"\nint main(void) {\n";
+  for (double g : speeds) main += fmt::format("  printf(\"%.17g %d\\n\", k13_cor({0:.17g}), k13_sticks({0:.17g}));\n", g);
+  main += "  printf(\"%d\\n\", k13_cor(20.0) != k13_cor(20.0));\n  return 0;\n}\n";
+  std::istringstream out(bounce::testing::compile_and_run_c99(dir, main));
   for (double g : speeds) {
     double cor = 0.0;
     int sticks = -1;

@@ -71,4 +71,20 @@ inline void expect_rejected(const std::vector<std::string>& args, const std::str
   EXPECT_EQ(r.err.find("terminate"), std::string::npos) << r.err;
 }
 
+/// Compiles `main_c` (next to headers already written into `dir`) as strict C99 with the C
+/// compiler found at configure time (-std=c99 -pedantic -Wall -Wextra -Werror), runs it
+/// and returns what it printed; a failure to compile or run fails the test.
+inline std::string compile_and_run_c99(const std::filesystem::path& dir, const std::string& main_c) {
+  std::ofstream(dir / "main.c") << main_c;
+  const std::string compile = std::string(BOUNCE_C_COMPILER) + " -std=c99 -pedantic -Wall -Wextra -Werror -o " +
+                              quote((dir / "main").string()) + " " + quote((dir / "main.c").string()) + " -lm";
+  if (std::system(compile.c_str()) != 0) {
+    ADD_FAILURE() << "does not compile: " << compile;
+    return "";
+  }
+  const std::string run = quote((dir / "main").string()) + " > " + quote((dir / "out.txt").string());
+  if (std::system(run.c_str()) != 0) ADD_FAILURE() << "does not run: " << run;
+  return slurp(dir / "out.txt");
+}
+
 }  // namespace bounce::testing
