@@ -61,12 +61,12 @@ int run_load_tangential(const TableCommand& c, const std::string& text) {
   const double gn = c.numbers.require("--velocity", "the normal impact speed g^N at which to read the table");
   const double gt = c.numbers.require("--tangential-velocity", "the tangential impact speed g^T at which to read the table");
   const double cor = t.cor(gn, gt);
+  const long breaks = t.breaks(gn, gt);
   if (c.json) {
-    print_json({{"velocity", gn}, {"tangential_velocity", gt}, {"cor_tangential", cor}, {"breaks", t.breaks(gn, gt)},
+    print_json({{"velocity", gn}, {"tangential_velocity", gt}, {"cor_tangential", cor}, {"breaks", breaks},
                 {"bound", t.bound}, {"description", t.description}});
   } else {
-    std::cout << fmt::format("cor_tangential {:.10g} ({} asperity breaks), table error <= {:g}\n", cor, t.breaks(gn, gt),
-                             t.bound);
+    std::cout << fmt::format("cor_tangential {:.10g} ({} asperity breaks), table error <= {:g}\n", cor, breaks, t.bound);
   }
   return 0;
 }

@@ -117,28 +117,34 @@ struct CheckPoint {
 
 }  // namespace
 
-double TangentialTable::cor(double gn, double gt) const {
+namespace {
+
+// eps^T and the number of breaks, after the range checks.
+double lookup(const TangentialTable& t, double gn, double gt, long* breaks) {
   require_finite("velocity", gn);
   require_finite("tangential_velocity", gt);
   const double slack = 1e-12;
-  if (gn < gn_min * (1 - slack) || gn > gn_max * (1 + slack)) {
-    throw InvalidArgument("velocity", fmt::format("{:g}", gn), fmt::format("{:g} <= g^N <= {:g} m/s (the table's range)", gn_min, gn_max));
+  if (gn < t.gn_min * (1 - slack) || gn > t.gn_max * (1 + slack)) {
+    throw InvalidArgument("velocity", fmt::format("{:g}", gn),
+                          fmt::format("{:g} <= g^N <= {:g} m/s (the table's range)", t.gn_min, t.gn_max));
   }
-  if (gt < gt_min * (1 - slack) || gt > gt_max * (1 + slack)) {
+  if (gt < t.gt_min * (1 - slack) || gt > t.gt_max * (1 + slack)) {
     throw InvalidArgument("tangential_velocity", fmt::format("{:g}", gt),
-                          fmt::format("{:g} <= g^T <= {:g} m/s (the table's range)", gt_min, gt_max));
+                          fmt::format("{:g} <= g^T <= {:g} m/s (the table's range)", t.gt_min, t.gt_max));
   }
-  const tt_table v = view(*this);
-  const double e = tt_cor(&v, gn, gt, nullptr);
+  const tt_table v = view(t);
+  const double e = tt_cor(&v, gn, gt, breaks);
   if (!std::isfinite(e)) throw NumericalError(fmt::format("tangential table: no value at g^N = {:g}, g^T = {:g} m/s", gn, gt));
   return e;
 }
 
+}  // namespace
+
+double TangentialTable::cor(double gn, double gt) const { return lookup(*this, gn, gt, nullptr); }
+
 long TangentialTable::breaks(double gn, double gt) const {
-  (void)cor(gn, gt);  // the range checks
-  const tt_table v = view(*this);
   long count = 0;
-  tt_cor(&v, gn, gt, &count);
+  lookup(*this, gn, gt, &count);
   return count;
 }
 
