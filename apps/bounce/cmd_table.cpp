@@ -50,14 +50,18 @@ std::array<double, 2> parse_interval(const std::string& option, const std::strin
   return {lo, hi};
 }
 
+// A table read from the --load file; a malformed one is reported against --load.
+template <class Table>
+Table parse_loaded(const TableCommand& c, const std::string& text) {
+  try {
+    return Table::from_json(text);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument("--load", c.load, e.allowed());
+  }
+}
+
 int run_load_tangential(const TableCommand& c, const std::string& text) {
-  const TangentialTable t = [&] {
-    try {
-      return TangentialTable::from_json(text);
-    } catch (const InvalidArgument& e) {
-      throw InvalidArgument("--load", c.load, e.allowed());
-    }
-  }();
+  const auto t = parse_loaded<TangentialTable>(c, text);
   const double gn = c.numbers.require("--velocity", "the normal impact speed g^N at which to read the table");
   const double gt = c.numbers.require("--tangential-velocity", "the tangential impact speed g^T at which to read the table");
   const double cor = t.cor(gn, gt);
@@ -77,13 +81,7 @@ int run_load(const TableCommand& c) {
   std::stringstream text;
   text << in.rdbuf();
   if (is_tangential_table(text.str())) return run_load_tangential(c, text.str());
-  const NormalTable t = [&] {
-    try {
-      return NormalTable::from_json(text.str());
-    } catch (const InvalidArgument& e) {
-      throw InvalidArgument("--load", c.load, e.allowed());
-    }
-  }();
+  const auto t = parse_loaded<NormalTable>(c, text.str());
   const double g = c.numbers.require("--velocity", "the impact speed at which to read the table");
   const double cor = t.cor(g);
   const auto outcome = t.outcome(g);
