@@ -88,7 +88,7 @@ void cvode(benchmark::State& state, int method) {
   double e = 0.0;
   long steps = 0;
   for (auto _ : state) e = cvode_cor(kappa, tolerance, method, steps);
-  state.counters["error"] = std::abs(e - bounce::analytic::master_cor(kappa, bounce::dynamics::EndRule::overlap));
+  state.counters["error"] = std::abs(e - bounce::analytic::master_cor(kappa, bounce::models::EndRule::overlap));
   state.counters["steps"] = static_cast<double>(steps);
 }
 

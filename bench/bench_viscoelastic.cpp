@@ -10,7 +10,7 @@
 #include "unit_collision.hpp"
 
 namespace {
-using bounce::dynamics::EndRule;
+using bounce::models::EndRule;
 
 void master(benchmark::State& state, EndRule rule) {
   // Cycle through 64 kappa spread over [1e-3, 1e3] so that nothing is cached.

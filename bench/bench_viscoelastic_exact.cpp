@@ -8,8 +8,8 @@
 
 int main(int argc, char** argv) {
   if (argc != 3) return 2;
-  const auto rule = std::string(argv[2]) == "force" ? bounce::dynamics::EndRule::force
-                                                    : bounce::dynamics::EndRule::overlap;
+  const auto rule = std::string(argv[2]) == "force" ? bounce::models::EndRule::force
+                                                    : bounce::models::EndRule::overlap;
   std::printf("%.17g\n", bounce::analytic::master_cor(std::strtod(argv[1], nullptr), rule));
   return 0;
 }

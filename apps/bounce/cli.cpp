@@ -333,7 +333,7 @@ models::ModelSpec ModelOptions::spec() const {
   s.dissipative_constant = numbers_.get("--A");
   s.shear_viscosity = numbers_.get("--eta1");
   s.bulk_viscosity = numbers_.get("--eta2");
-  s.end_rule = dynamics::parse_end_rule(contact_end_);
+  s.end_rule = models::parse_end_rule(contact_end_);
   if (!curvature1_.empty() || !curvature2_.empty() || numbers_.given("--angle")) {
     if (curvature1_.empty()) throw InvalidArgument("--curvature-radii", "(not given)", "R1,R2 of body 1 in m");
     const auto r1 = parse_radii("--curvature-radii", curvature1_);
@@ -346,8 +346,8 @@ models::ModelSpec ModelOptions::spec() const {
   s.dissipative_constant_b = numbers_.get("--B");
   s.yield_strength = numbers_.get("--yield");
   try {
-    s.tangential_law = dynamics::parse_tangential_law(tangential_law_);
-    s.asperity_form = dynamics::parse_asperity_form(asperity_form_);
+    s.tangential_law = models::parse_tangential_law(tangential_law_);
+    s.asperity_form = models::parse_asperity_form(asperity_form_);
   } catch (const InvalidArgument& e) {
     throw e.renamed(option_name(e.parameter()));
   }

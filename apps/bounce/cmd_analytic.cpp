@@ -45,7 +45,7 @@ int run_analytic(const AnalyticCommand& c) {
   if (s.dissipative_constant <= 0.0) {
     throw InvalidArgument("--A", "0", "A > 0 s (with A = 0 the collision is elastic: e = 1)");
   }
-  using dynamics::EndRule;
+  using models::EndRule;
   const double k = s.kappa;
   const double q = s.q;
   const auto bp04_simple = analytic::bp04_simple_series();

@@ -70,7 +70,7 @@ int run_collide(const CollideCommand& c) {
   }
   nlohmann::json out = outcome_json(outcome, c.trajectory);
   out["model"] = spec.name;
-  out["contact_end"] = std::string(dynamics::to_string(spec.end_rule));
+  out["contact_end"] = std::string(models::to_string(spec.end_rule));
   out["velocity"] = velocity;
   add_scales(out, pair, spec, velocity);
   if (models::model_info(spec.name).adhesive || spec.yield_strength) {
@@ -89,7 +89,7 @@ int run_collide(const CollideCommand& c) {
     return 0;
   }
   std::cout << fmt::format("model {} (contact end: {}, method: {}) at {:.6g} m/s\n", spec.name,
-                           dynamics::to_string(spec.end_rule), outcome.method, velocity);
+                           models::to_string(spec.end_rule), outcome.method, velocity);
   if (out.contains("kappa")) {
     std::cout << fmt::format("kappa = {:.6g} (BP04 (8.70))", out["kappa"].get<double>());
     if (out.contains("characteristic_velocity")) {

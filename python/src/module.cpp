@@ -87,14 +87,14 @@ models::ModelSpec make_model(const std::string& name, std::optional<double> A, s
   s.dissipative_constant = A;
   s.shear_viscosity = eta1;
   s.bulk_viscosity = eta2;
-  s.end_rule = dynamics::parse_end_rule(contact_end);
+  s.end_rule = models::parse_end_rule(contact_end);
   s.relaxation_time = tvis;
   s.z0 = z0;
   s.k = k;
   s.dissipative_constant_b = B;
   s.yield_strength = yield_strength;
-  s.tangential_law = dynamics::parse_tangential_law(tangential_law);
-  s.asperity_form = dynamics::parse_asperity_form(asperity_form);
+  s.tangential_law = models::parse_tangential_law(tangential_law);
+  s.asperity_form = models::parse_asperity_form(asperity_form);
   s.friction = friction;
   s.asperity_size = asperity;
   s.shear_damping = shear_damping;
@@ -503,7 +503,7 @@ PYBIND11_MODULE(_bounce, m) {
   m.def(
       "master_cor",
       [](py::object kappa, const std::string& contact_end) {
-        const auto rule = dynamics::parse_end_rule(contact_end);
+        const auto rule = models::parse_end_rule(contact_end);
         return map_values<double>(kappa, [&](double k) { return analytic::master_cor(k, rule); });
       },
       py::arg("kappa"), py::arg("contact_end") = "overlap",

@@ -32,7 +32,7 @@ AdhesiveClosedForms adhesive_closed_forms(const Pair& pair, const models::ModelS
     const ViscoelasticScales s = viscoelastic_scales(pair, spec, v);
     c.tensile_work_bp04_8_95 = w0;
     c.e_ad_bp04_8_98 =  // BP04 (8.98)
-        analytic::cor_adhesive_bp04(analytic::master_cor(s.kappa, dynamics::EndRule::overlap), v, w0, m);
+        analytic::cor_adhesive_bp04(analytic::master_cor(s.kappa, models::EndRule::overlap), v, w0, m);
   }
   if (spec.yield_strength) {
     c.yield_velocity = analytic::yield_velocity(r, m, e, *spec.yield_strength);  // K13 (28)

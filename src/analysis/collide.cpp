@@ -65,7 +65,7 @@ dynamics::CollisionOutcome from_master(const models::ModelSpec& spec, const Pair
   dynamics::EnergyBudget& e = out.energy;
   e.initial_kinetic = 0.5 * m * velocity * velocity;
   e.final_kinetic = e.initial_kinetic * v.cor * v.cor;
-  if (spec.end_rule == dynamics::EndRule::force) {
+  if (spec.end_rule == models::EndRule::force) {
     // At F = 0: xi' = -(2/3) xi / A, so the overlap left is xi = (3/2) A e g.
     const double xi_end = 1.5 * s.dissipative_constant * v.cor * velocity;
     e.elastic_remaining = 0.4 * s.force_constant * xi_end * xi_end * std::sqrt(xi_end);
@@ -136,7 +136,7 @@ void add_tangential_warnings(dynamics::CollisionOutcome& out) {
 
 // The tangential motion of an oblique collision of a dynamic-contact model, driven by
 // the recorded normal force.
-void add_tangential(dynamics::CollisionOutcome& out, const Pair& pair, const dynamics::TangentialModel& model,
+void add_tangential(dynamics::CollisionOutcome& out, const Pair& pair, const models::TangentialModel& model,
                     const CollideOptions& options) {
   if (out.outcome != dynamics::Outcome::bounce) {
     out.notes.push_back("the grains stick: no tangential restitution");
@@ -216,7 +216,7 @@ dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& sp
     if (options.method == Method::master) {
       throw InvalidArgument("method", "master", fmt::format("integrate for model {} (it has no master curve)", spec.name));
     }
-    if (spec.end_rule == dynamics::EndRule::force) {
+    if (spec.end_rule == models::EndRule::force) {
       throw InvalidArgument("contact_end", "force", fmt::format("overlap for model {} (its contact ends when the crack runs away)", spec.name));
     }
     const models::KrijtParameters p = models::krijt_parameters(spec, pair);
@@ -275,7 +275,7 @@ dynamics::CollisionOutcome collide(const Pair& pair, const models::ModelSpec& sp
     throw InvalidArgument("method", "master", "integrate or auto for an oblique collision (it is integrated)");
   }
   if (options.tangential_velocity > 0.0) {  // oblique: normal and tangential motion together
-    const dynamics::TangentialModel tangential = models::tangential_model(spec, pair);
+    const models::TangentialModel tangential = models::tangential_model(spec, pair);
     dynamics::NormalCollisionOptions o;
     o.end_rule = spec.end_rule;
     o.integration = options.integration;

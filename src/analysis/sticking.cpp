@@ -72,7 +72,7 @@ double sticking_velocity_bp04(const Pair& pair, const models::ModelSpec& model) 
   const double c0 = models::hertz_geometry(model, pair).force_constant;
   // e(g) g increases with g (e falls like g^{-1/5} at most): one root above g0.
   auto f = [&](double g) {
-    return analytic::master_cor(analytic::kappa(a, c0, m, g), dynamics::EndRule::overlap) * g - g0;
+    return analytic::master_cor(analytic::kappa(a, c0, m, g), models::EndRule::overlap) * g - g0;
   };
   double hi = g0;
   while (f(hi) < 0.0) hi *= 2.0;

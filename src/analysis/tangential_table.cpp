@@ -57,13 +57,13 @@ constexpr double derivative_step = 1e-6;
 struct RowBuilder {
   const models::NormalForceModel& model;
   double mass;
-  dynamics::TangentialModel tangential;
+  models::TangentialModel tangential;
   const std::vector<double>& s;
 
   void operator()(double gn, Row& row, double* node) const {
     const double xi0 = model.reference_overlap(gn), time_unit = xi0 / gn;
     dynamics::NormalCollisionOptions o;
-    o.end_rule = dynamics::EndRule::force;
+    o.end_rule = models::EndRule::force;
     o.integration.relative_tolerance = o.integration.absolute_tolerance = 1e-13;
     const double tau_end = dynamics::integrate_normal_collision(model, mass, gn, o).contact_time / time_unit;
     const double k_scale = tangential.friction * (xi0 / tangential.asperity_size) / tangential.kappa;
@@ -165,13 +165,13 @@ TangentialTable build_tangential_table(const Pair& pair, const models::ModelSpec
                           "a non-adhesive force-law model for an eps^T table (hertz, viscoelastic, "
                           "viscoelastic-shifted, power-law; docs/tables.md)");
   }
-  const dynamics::TangentialModel tangential = models::tangential_model(spec, pair);
-  if (tangential.law != dynamics::TangentialLaw::asperity) {
-    throw InvalidArgument("tangential_law", std::string(to_string(tangential.law)),
+  const models::TangentialModel tangential = models::tangential_model(spec, pair);
+  if (tangential.law != models::TangentialLaw::asperity) {
+    throw InvalidArgument("tangential_law", std::string(models::to_string(tangential.law)),
                           "asperity for an eps^T table (the step law is not tabulated; docs/tables.md)");
   }
-  if (tangential.form != dynamics::AsperityForm::published) {
-    throw InvalidArgument("asperity_form", std::string(to_string(tangential.form)),
+  if (tangential.form != models::AsperityForm::published) {
+    throw InvalidArgument("asperity_form", std::string(models::to_string(tangential.form)),
                           "published for an eps^T table (the passive form is not tabulated; docs/tables.md)");
   }
   const auto force = models::make_normal_force(spec, pair);

@@ -54,13 +54,13 @@ double check_kappa(double kappa) {
 
 }  // namespace
 
-double master_cor(double kappa, dynamics::EndRule rule) {
+double master_cor(double kappa, models::EndRule rule) {
   check_kappa(kappa);
   if (kappa < 1.0) {
-    const int q = rule == dynamics::EndRule::overlap ? cor_overlap_scaled : cor_force;
+    const int q = rule == models::EndRule::overlap ? cor_overlap_scaled : cor_force;
     return clenshaw(small_coefficients[q], small_nodes, 2.0 * std::sqrt(kappa) - 1.0);
   }
-  if (rule == dynamics::EndRule::overlap) {
+  if (rule == models::EndRule::overlap) {
     const double k2 = kappa * kappa;
     if (kappa >= overlap_tail_start) return tail_cor_constant / (k2 * k2 * kappa);
     const Octave o = octave_of(kappa);
@@ -72,11 +72,11 @@ double master_cor(double kappa, dynamics::EndRule rule) {
   return clenshaw(octave_coefficients[o.index][cor_force], octave_nodes[o.index], o.x);
 }
 
-MasterValues viscoelastic_master(double kappa, dynamics::EndRule rule) {
+MasterValues viscoelastic_master(double kappa, models::EndRule rule) {
   check_kappa(kappa);
   MasterValues v;
   v.cor = master_cor(kappa, rule);
-  const bool overlap = rule == dynamics::EndRule::overlap;
+  const bool overlap = rule == models::EndRule::overlap;
   if (kappa < 1.0) {
     const double x = 2.0 * std::sqrt(kappa) - 1.0;
     v.contact_time = clenshaw(small_coefficients[overlap ? time_overlap : time_force], small_nodes, x);

@@ -14,6 +14,8 @@
 
 namespace bounce::dynamics::detail {
 
+using models::EndRule;
+
 struct NormalScaled {
   const models::NormalForceModel* model;
   double xi0;

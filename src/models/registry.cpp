@@ -175,14 +175,14 @@ std::unique_ptr<NormalForceModel> make_normal_force(const ModelSpec& spec, const
   return make_viscoelastic_force(geometry, a, info.name);
 }
 
-dynamics::TangentialModel tangential_model(const ModelSpec& spec, const Pair& pair) {
-  dynamics::TangentialModel t;
+models::TangentialModel tangential_model(const ModelSpec& spec, const Pair& pair) {
+  models::TangentialModel t;
   t.law = spec.tangential_law;
   t.form = spec.asperity_form;
   t.kappa = pair.tangential_mass_factor();
   if (!spec.friction) throw InvalidArgument("friction", "(not given)", "a friction coefficient mu >= 0 (BSHP96 (36))");
   t.friction = require_non_negative("friction", *spec.friction, "friction coefficient mu");
-  if (t.law == dynamics::TangentialLaw::asperity) {
+  if (t.law == models::TangentialLaw::asperity) {
     if (!spec.asperity_size) {
       throw InvalidArgument("asperity", "(not given)", "an asperity size zeta0 > 0 m (BSHP96 (32))");
     }
@@ -193,7 +193,7 @@ dynamics::TangentialModel tangential_model(const ModelSpec& spec, const Pair& pa
     }
     t.shear_damping = require_non_negative("shear_damping", *spec.shear_damping, "shear damping gamma_s [1/s]");
   }
-  dynamics::validate(t);
+  validate(t);
   return t;
 }
 

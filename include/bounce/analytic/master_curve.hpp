@@ -15,7 +15,7 @@
 // Stated error: 1e-10 (absolute on the COR, relative on times and overlaps) for
 // every kappa >= 0; tests check the tables against independent integrations.
 
-#include "bounce/dynamics/outcome.hpp"
+#include "bounce/models/end_rule.hpp"
 
 namespace bounce::analytic {
 
@@ -26,9 +26,9 @@ struct MasterValues {
 };
 
 /// All three values at kappa >= 0 (InvalidArgument for negative or non-finite kappa).
-MasterValues viscoelastic_master(double kappa, dynamics::EndRule rule);
+MasterValues viscoelastic_master(double kappa, models::EndRule rule);
 /// Only the COR (the fast path).
-double master_cor(double kappa, dynamics::EndRule rule);
+double master_cor(double kappa, models::EndRule rule);
 
 /// The error the master curves are guaranteed to stay within.
 constexpr double master_curve_stated_error = 1e-10;

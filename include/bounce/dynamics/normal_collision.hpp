@@ -4,12 +4,13 @@
 
 #include "bounce/dynamics/integration.hpp"
 #include "bounce/dynamics/outcome.hpp"
+#include "bounce/models/end_rule.hpp"
 #include "bounce/models/normal_force.hpp"
 
 namespace bounce::dynamics {
 
 struct NormalCollisionOptions {
-  EndRule end_rule = EndRule::overlap;
+  models::EndRule end_rule = models::EndRule::overlap;
   IntegrationSettings integration;
   bool record_trajectory = false;
   int trajectory_points = 400;  ///< roughly evenly spaced samples over an elastic contact time

@@ -9,15 +9,6 @@
 
 namespace bounce::dynamics {
 
-/// When does the contact end (SPEC §3)?
-enum class EndRule {
-  overlap,  ///< when the overlap returns to zero (BP04's series describe this)
-  force,    ///< when the total normal force first vanishes (no attraction between non-adhesive grains)
-};
-std::string_view to_string(EndRule rule);
-/// "overlap" | "force"; InvalidArgument("contact_end", …) otherwise.
-EndRule parse_end_rule(std::string_view text);
-
 enum class Outcome { bounce, stick };
 std::string_view to_string(Outcome outcome);
 

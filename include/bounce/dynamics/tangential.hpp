@@ -25,32 +25,10 @@
 
 #include "bounce/dynamics/normal_collision.hpp"
 #include "bounce/dynamics/outcome.hpp"
+#include "bounce/models/tangential.hpp"
 #include "bounce/models/normal_force.hpp"
 
 namespace bounce::dynamics {
-
-enum class TangentialLaw { asperity, step };
-enum class AsperityForm { published, passive };
-std::string_view to_string(TangentialLaw law);
-std::string_view to_string(AsperityForm form);
-TangentialLaw parse_tangential_law(std::string_view text);  ///< "asperity" | "step"
-AsperityForm parse_asperity_form(std::string_view text);    ///< "published" | "passive"
-
-struct TangentialModel {
-  TangentialLaw law = TangentialLaw::asperity;
-  AsperityForm form = AsperityForm::published;
-  double friction = 0.0;       ///< mu, BSHP96 (35)-(36)
-  double asperity_size = 0.0;  ///< zeta0 [m], BSHP96 (32) (asperity law)
-  double shear_damping = 0.0;  ///< gamma_s [1/s], BSHP96 (39) (step law)
-  double kappa = 2.0 / 7.0;    ///< BSHP96 (8): 2/7 for homogeneous spheres
-  /// Asperity breaks per time unit xi0/g^N above which the sawtooth is averaged (back
-  /// below a tenth of it); +inf resolves every break.
-  double dense_breaks = 1e3;
-};
-
-/// Checks the parameters (mu >= 0; zeta0 > 0 for the asperity law, gamma_s >= 0 for the
-/// step law; 0 < kappa <= 1); InvalidArgument names the offending one.
-void validate(const TangentialModel& model);
 
 /// The tangential motion over a collision whose normal motion is `normal` (its outcome
 /// and contact time). F^N(t) comes from the same integration for force-law models and
@@ -65,14 +43,14 @@ struct TangentialCollision {
 /// events).
 TangentialCollision integrate_tangential_collision(const models::NormalForceModel& normal, double effective_mass,
                                                    double normal_speed, double tangential_speed,
-                                                   const TangentialModel& tangential,
+                                                   const models::TangentialModel& tangential,
                                                    const NormalCollisionOptions& options = {});
 
 /// The tangential motion driven by a recorded normal force F^N(t) (samples of a
 /// finished collision, monotone cubic interpolation between them): for models whose
 /// normal motion has its own integrator (krijt, jkr-viscoelastic).
 TangentialOutcome integrate_tangential_motion(const std::vector<TrajectorySample>& normal, double effective_mass,
-                                              double tangential_speed, const TangentialModel& tangential,
+                                              double tangential_speed, const models::TangentialModel& tangential,
                                               const IntegrationSettings& settings = {});
 
 }  // namespace bounce::dynamics

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "bounce/contact/convex.hpp"
-#include "bounce/dynamics/outcome.hpp"
-#include "bounce/dynamics/tangential.hpp"
+#include "bounce/models/end_rule.hpp"
 #include "bounce/models/krijt.hpp"
 #include "bounce/models/normal_force.hpp"
+#include "bounce/models/tangential.hpp"
 #include "bounce/pair/pair.hpp"
 
 namespace bounce::models {
@@ -25,7 +25,7 @@ struct ModelSpec {
   std::optional<double> dissipative_constant;  ///< A [s] (BP04 (8.38)); or from the viscosities
   std::optional<double> shear_viscosity;       ///< eta1 [Pa s] (BSHP96 (17))
   std::optional<double> bulk_viscosity;        ///< eta2 [Pa s] (BSHP96 (17))
-  dynamics::EndRule end_rule = dynamics::EndRule::overlap;
+  models::EndRule end_rule = models::EndRule::overlap;
   std::optional<convex::Curvatures> curvatures;  ///< general convex bodies: C0 of (8.21) replaces rho
   std::optional<PowerLawParameters> power_law;   ///< the `power-law` model
   // Adhesive models (docs/adhesive.md).
@@ -35,8 +35,8 @@ struct ModelSpec {
   std::optional<double> dissipative_constant_b;  ///< B [s] of BP04 (8.57) (adhesive-viscoelastic)
   std::optional<double> yield_strength;   ///< Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)
   // Oblique collisions (docs/tangential.md): the tangential force law.
-  dynamics::TangentialLaw tangential_law = dynamics::TangentialLaw::asperity;
-  dynamics::AsperityForm asperity_form = dynamics::AsperityForm::published;
+  models::TangentialLaw tangential_law = models::TangentialLaw::asperity;
+  models::AsperityForm asperity_form = models::AsperityForm::published;
   std::optional<double> friction;        ///< mu, BSHP96 (35)-(36)
   std::optional<double> asperity_size;   ///< zeta0 [m], BSHP96 (32)
   std::optional<double> shear_damping;   ///< gamma_s [1/s], BSHP96 (39)
@@ -72,7 +72,7 @@ std::unique_ptr<NormalForceModel> make_normal_force(const ModelSpec& spec, const
 /// The tangential force law of `spec` for `pair` (kappa of BSHP96 (8) from the pair's
 /// moments of inertia), validated: the asperity law needs mu and zeta0, the step law
 /// mu and gamma_s (InvalidArgument names the missing or bad one).
-dynamics::TangentialModel tangential_model(const ModelSpec& spec, const Pair& pair);
+TangentialModel tangential_model(const ModelSpec& spec, const Pair& pair);
 
 /// Parameters of K13's model for this pair: gamma of the pair, T_vis, A (given or
 /// T_vis/nu^2), z0 and k, all validated. `jkr-viscoelastic` needs only A (or T_vis).

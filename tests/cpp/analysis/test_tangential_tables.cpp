@@ -154,11 +154,11 @@ TEST(TangentialTables, BadInput) {
     return build_tangential_table(bshp96(), m, 0.01, 10.0, 1e-3, gt_max);
   };
   auto step = asperity(2e-4);
-  step.tangential_law = dynamics::TangentialLaw::step;
+  step.tangential_law = models::TangentialLaw::step;
   step.shear_damping = 100.0;
   EXPECT_THROW(build(step), InvalidArgument);
   auto passive = asperity(2e-4);
-  passive.asperity_form = dynamics::AsperityForm::passive;
+  passive.asperity_form = models::AsperityForm::passive;
   EXPECT_THROW(build(passive), InvalidArgument);
   auto krijt = asperity(2e-4);
   krijt.name = "krijt";

@@ -15,7 +15,7 @@
 using namespace bounce;
 using analytic::master_cor;
 using analytic::viscoelastic_master;
-using dynamics::EndRule;
+using models::EndRule;
 
 namespace {
 const Pair& ice() {

@@ -10,7 +10,7 @@
 #include "bounce/analytic/viscoelastic.hpp"
 
 using namespace bounce::analytic;
-using bounce::dynamics::EndRule;
+using bounce::models::EndRule;
 
 TEST(ViscoelasticAnalytic, ConstantsAgainstQuadrature) {
   boost::math::quadrature::tanh_sinh<double> integrator;

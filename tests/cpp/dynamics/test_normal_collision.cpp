@@ -13,7 +13,7 @@
 #include "bounce/pair/materials_table.hpp"
 
 using namespace bounce;
-using dynamics::EndRule;
+using models::EndRule;
 
 namespace {
 constexpr double pi = std::numbers::pi;

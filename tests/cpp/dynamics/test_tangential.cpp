@@ -12,8 +12,8 @@
 #include "bounce/models/registry.hpp"
 
 using namespace bounce;
-using dynamics::AsperityForm;
-using dynamics::TangentialLaw;
+using models::AsperityForm;
+using models::TangentialLaw;
 
 namespace {
 
@@ -35,8 +35,8 @@ models::ModelSpec viscoelastic() {
   return s;
 }
 
-dynamics::TangentialModel asperity(double zeta0_over_r, AsperityForm form = AsperityForm::published) {
-  dynamics::TangentialModel t;
+models::TangentialModel asperity(double zeta0_over_r, AsperityForm form = AsperityForm::published) {
+  models::TangentialModel t;
   t.asperity_size = zeta0_over_r * bshp96().effective_radius();
   t.friction = std::sqrt(zeta0_over_r);
   t.kappa = bshp96().tangential_mass_factor();
@@ -44,12 +44,12 @@ dynamics::TangentialModel asperity(double zeta0_over_r, AsperityForm form = Aspe
   return t;
 }
 
-dynamics::TangentialCollision oblique(double gn, double gt, const dynamics::TangentialModel& t) {
+dynamics::TangentialCollision oblique(double gn, double gt, const models::TangentialModel& t) {
   const auto force = models::make_normal_force(viscoelastic(), bshp96());
   return dynamics::integrate_tangential_collision(*force, bshp96().effective_mass(), gn, gt, t);
 }
 
-double cor_t(double gn, double gt, const dynamics::TangentialModel& t) { return oblique(gn, gt, t).tangential.cor; }
+double cor_t(double gn, double gt, const models::TangentialModel& t) { return oblique(gn, gt, t).tangential.cor; }
 
 }  // namespace
 
@@ -96,7 +96,7 @@ TEST(Tangential, SmoothLimit) {
     previous = e;
   }
   EXPECT_GT(previous, 0.9998);  // 1 - eps^T ~ mu ~ sqrt(zeta0): 1.1e-4 at 1e-11
-  dynamics::TangentialModel frictionless = asperity(1e-4);
+  models::TangentialModel frictionless = asperity(1e-4);
   frictionless.friction = 0.0;
   EXPECT_EQ(cor_t(1.0, 0.1, frictionless), 1.0);
 }
@@ -160,12 +160,12 @@ TEST(Tangential, Figure2Regimes) {
 // Dense breaking: zeta0 = 1e-12 R_eff (~1e8 breaks) ends without resolving each break;
 // averaging agrees with resolving every break to 1e-8 while the grains slide throughout.
 TEST(Tangential, DenseBreaking) {
-  dynamics::TangentialModel tiny = asperity(1e-12);
+  models::TangentialModel tiny = asperity(1e-12);
   tiny.friction = 0.5;
   const auto out = oblique(1.0, 3.0, tiny);
   EXPECT_GT(out.tangential.averaged_time, 0.0);
   EXPECT_LT(out.tangential.steps, 10000);
-  dynamics::TangentialModel dense = asperity(1e-6), resolved = asperity(1e-6);
+  models::TangentialModel dense = asperity(1e-6), resolved = asperity(1e-6);
   dense.friction = resolved.friction = 0.5;
   resolved.dense_breaks = std::numeric_limits<double>::infinity();
   const auto a = oblique(1.0, 3.0, dense), b = oblique(1.0, 3.0, resolved);
@@ -180,11 +180,11 @@ TEST(Tangential, DenseBreaking) {
 // (mu large) gives eps^T = exp(-gamma_s t_c / kappa). Both to 1e-9 (integration error).
 TEST(Tangential, StepLawLimits) {
   models::ModelSpec spec = viscoelastic();
-  spec.end_rule = dynamics::EndRule::force;
+  spec.end_rule = models::EndRule::force;
   const auto force = models::make_normal_force(spec, bshp96());
   dynamics::NormalCollisionOptions o;
-  o.end_rule = dynamics::EndRule::force;
-  dynamics::TangentialModel step;
+  o.end_rule = models::EndRule::force;
+  models::TangentialModel step;
   step.law = TangentialLaw::step;
   step.kappa = bshp96().tangential_mass_factor();
   step.friction = 0.01;
@@ -192,7 +192,7 @@ TEST(Tangential, StepLawLimits) {
   const double gn = 1.0, gt = 1.0;
   const auto sliding = dynamics::integrate_tangential_collision(*force, bshp96().effective_mass(), gn, gt, step, o);
   EXPECT_NEAR(sliding.tangential.cor, 1.0 - step.friction * (1.0 + sliding.normal.cor) * gn / (step.kappa * gt), 1e-9);
-  dynamics::TangentialModel viscous = step;
+  models::TangentialModel viscous = step;
   viscous.friction = 1e12;
   viscous.shear_damping = 2000.0;
   const auto drag = dynamics::integrate_tangential_collision(*force, bshp96().effective_mass(), gn, gt, viscous, o);

@@ -1,0 +1,18 @@
+#pragma once
+// When does the contact of a collision end? A model parameter (`contact_end`) that the
+// engines (dynamics) and the master curves (analytic) both read, so it lives here, the
+// lowest layer that needs it.
+
+#include <string_view>
+
+namespace bounce::models {
+
+enum class EndRule {
+  overlap,  ///< when the overlap returns to zero (BP04's series describe this)
+  force,    ///< when the total normal force first vanishes (no attraction between non-adhesive grains)
+};
+std::string_view to_string(EndRule rule);
+/// "overlap" | "force"; InvalidArgument("contact_end", …) otherwise.
+EndRule parse_end_rule(std::string_view text);
+
+}  // namespace bounce::models
