@@ -9,6 +9,8 @@
 #include <benchmark/benchmark.h>
 
 #include "bounce/analysis/collide.hpp"
+#include "bounce/analysis/curve.hpp"
+#include "bounce/models/registry.hpp"
 #include "bounce/pair/materials_table.hpp"
 
 namespace {
@@ -21,15 +23,10 @@ const bounce::Pair& ice() {
   return p;
 }
 
-bounce::models::ModelSpec krijt(double tvis) {
-  bounce::models::ModelSpec s;
-  s.name = "krijt";
-  s.relaxation_time = tvis;
-  return s;
-}
+bounce::models::Model krijt(double tvis) { return bounce::models::make_model(ice(), "krijt", {{"tvis", tvis}}); }
 
-bounce::CollideOptions engine(int which, double tolerance) {
-  bounce::CollideOptions o;
+bounce::analysis::CollideOptions engine(int which, double tolerance) {
+  bounce::analysis::CollideOptions o;
   o.stiff_engine = which == 0 ? bounce::dynamics::StiffEngine::rodas : bounce::dynamics::StiffEngine::cvode;
   o.adhesive_tolerance = tolerance;
   return o;
@@ -40,9 +37,10 @@ void collision(benchmark::State& state) {
   const double velocity = static_cast<double>(state.range(0)) / 10.0;
   const double tvis = std::pow(10.0, -static_cast<double>(state.range(1)));
   const auto options = engine(static_cast<int>(state.range(2)), std::pow(10.0, -static_cast<double>(state.range(3))));
+  const auto model = krijt(tvis);
   bounce::dynamics::CollisionOutcome out;
-  for (auto _ : state) out = bounce::collide(ice(), krijt(tvis), velocity, options);
-  const auto reference = bounce::collide(ice(), krijt(tvis), velocity, engine(1, 1e-12));
+  for (auto _ : state) out = bounce::analysis::collide(ice(), model, velocity, options);
+  const auto reference = bounce::analysis::collide(ice(), model, velocity, engine(1, 1e-12));
   state.counters["velocity"] = velocity;
   state.counters["tvis"] = tvis;
   state.counters["engine"] = static_cast<double>(state.range(2));
@@ -65,7 +63,8 @@ std::vector<double> fig4_velocities() {  // 100 velocities, 0.1 to 100 m/s (geom
 void fig4_curve(benchmark::State& state) {
   const double tvis = std::pow(10.0, -static_cast<double>(state.range(0)));
   const auto v = fig4_velocities();
-  for (auto _ : state) benchmark::DoNotOptimize(bounce::collide_curve(ice(), krijt(tvis), v));
+  const auto model = krijt(tvis);
+  for (auto _ : state) benchmark::DoNotOptimize(bounce::analysis::collide_curve(ice(), model, v));
   state.counters["tvis"] = tvis;
 }
 

@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bounce/analysis/tables.hpp"
+#include "bounce/models/registry.hpp"
 #include "bounce/pair/materials_table.hpp"
 
 namespace {
@@ -13,15 +14,14 @@ const bounce::Pair& pair() {
   static const bounce::Pair p = bounce::Pair::identical(bounce::MaterialTable::builtin().at("ice-bshp96"), 0.01);
   return p;
 }
-bounce::models::ModelSpec model() {
-  bounce::models::ModelSpec s;
-  s.dissipative_constant = 1e-6;
-  s.asperity_size = 2e-4 * pair().effective_radius();
-  s.friction = std::sqrt(2e-4);
-  return s;
+const bounce::models::Model& model() {
+  static const bounce::models::Model m = bounce::models::make_model(
+      pair(), "viscoelastic", {{"A", 1e-6}, {"asperity", 2e-4 * pair().effective_radius()}, {"friction", std::sqrt(2e-4)}});
+  return m;
 }
-const bounce::TangentialTable& table() {
-  static const bounce::TangentialTable t = bounce::build_tangential_table(pair(), model(), 0.01, 10.0, 1e-3, 1.0);
+const bounce::analysis::TangentialTable& table() {
+  static const bounce::analysis::TangentialTable t =
+      bounce::analysis::build_tangential_table(pair(), model(), 0.01, 10.0, 1e-3, 1.0);
   return t;
 }
 
@@ -35,11 +35,11 @@ void tangential_table(benchmark::State& state, double gt) {
 }
 
 void tangential_direct(benchmark::State& state, double gt) {
-  bounce::CollideOptions o;
+  bounce::analysis::CollideOptions o;
   o.tangential_velocity = gt;
   double gn = 1.0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(bounce::collide(pair(), model(), gn, o).tangential->cor);
+    benchmark::DoNotOptimize(bounce::analysis::collide(pair(), model(), gn, o).tangential->cor);
     gn = gn < 1.01 ? gn * 1.0001 : 1.0;
   }
 }

@@ -17,6 +17,7 @@
 
 #include "bounce/analysis/collide.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/models/registry.hpp"
 #include "bounce/pair/materials_table.hpp"
 
 namespace {
@@ -56,10 +57,7 @@ int main(int argc, char** argv) {
           for (double z0 : z0s) {
             if (model != "krijt" && z0 != z0s.front()) continue;  // z0 only enters the crack law
             for (double v : velocities) {
-              bounce::models::ModelSpec spec;
-              spec.name = model;
-              spec.relaxation_time = tvis;
-              spec.z0 = z0;
+              bounce::ParameterInputs inputs{{"tvis", tvis}, {"z0", z0}};
               ++runs;
               if (!coarse && runs % 2000 == 0) {
                 const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -70,7 +68,8 @@ int main(int argc, char** argv) {
               std::snprintf(label, sizeof label, "%s gamma=%g R_eff=%.3g T_vis=%.3g z0=%.3g v=%.3g", m.name.c_str(), gamma, r,
                             tvis, z0, v);
               try {
-                const auto out = bounce::collide(pair, spec, v);
+                const auto spec = bounce::models::make_model(pair, model, inputs);
+                const auto out = bounce::analysis::collide(pair, spec, v);
                 const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
                 if (seconds > worst_seconds) worst_seconds = seconds, worst_case = label;
                 const double closure = std::abs(out.energy.closure_error / out.energy.initial_kinetic);

@@ -1,14 +1,22 @@
 #pragma once
-// One function per subcommand; main() registers them all.
-#include "cli.hpp"
+// One subcommand per front-door command (api::commands()); main() registers them all.
+
+#include <functional>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "bounce/api/front_door.hpp"
+#include "options.hpp"
 
 namespace bounce::cli {
-Command add_materials_command(CLI::App& root);
-Command add_contact_command(CLI::App& root);
-Command add_collide_command(CLI::App& root);
-Command add_curve_command(CLI::App& root);
-Command add_analytic_command(CLI::App& root);
-Command add_sticking_command(CLI::App& root);
-Command add_rules_command(CLI::App& root);
-Command add_table_command(CLI::App& root);
+
+struct Command {
+  CLI::App* app = nullptr;
+  std::unique_ptr<Options> options;
+  std::function<int()> run;  ///< prints the result; the exit code
+};
+
+Command add_command(CLI::App& root, const api::CommandSpec& spec);
+
 }  // namespace bounce::cli

@@ -10,9 +10,9 @@
 int main() {
   const bounce::Material ice = bounce::MaterialTable::builtin().at("water-ice");
   const bounce::Pair pair = bounce::Pair::identical(ice, 1e-6);
-  const bounce::jkr::Parameters p{pair.effective_radius(), pair.effective_modulus(),
+  const bounce::contact::jkr::Parameters p{pair.effective_radius(), pair.effective_modulus(),
                                   *pair.surface_energy()};
-  const double pull_off = bounce::jkr::pull_off_force(p);
+  const double pull_off = bounce::contact::jkr::pull_off_force(p);
   const double expected = -1.5 * std::numbers::pi * 0.37 * 0.5e-6;
   std::printf("JKR pull-off of two 1 um water-ice spheres: %.6g N\n", pull_off);
   return std::abs(pull_off / expected - 1.0) < 1e-12 ? 0 : 1;

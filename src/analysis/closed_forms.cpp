@@ -5,52 +5,57 @@
 #include "bounce/analytic/master_curve.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
 #include "bounce/contact/surface_forces.hpp"
-#include "bounce/models/krijt.hpp"
-#include "bounce/models/normal_force.hpp"
 
-namespace bounce {
+namespace bounce::analysis {
 
-AdhesiveClosedForms adhesive_closed_forms(const Pair& pair, const models::ModelSpec& spec, double v) {
-  AdhesiveClosedForms c;
-  const double gamma = pair.require_surface_energy("model " + spec.name);
+namespace {
+
+void add_adhesive(ClosedForms& c, const Pair& pair, const models::Model& model, double gamma, double v) {
   const double r = pair.effective_radius(), e = pair.effective_modulus(), m = pair.effective_mass();
   c.sticking_velocity_jkr = analytic::sticking_velocity_jkr(m, r, e, gamma);
   c.sticking_velocity_k13_25 = analytic::sticking_velocity_k13(m, r, e, gamma);  // K13 (25)
-  c.e_jkr = analytic::cor_jkr(v, c.sticking_velocity_jkr);                      // K13 (24)
-  c.hertz_time_k13_22 = analytic::hertz_contact_time_k13(m, r, e, v);            // K13 (22)
-  c.tabor_parameter = surface::tabor_parameter(r, e, gamma, spec.z0);            // K13 (11)
-  if (spec.relaxation_time || spec.dissipative_constant) {
-    const double a = spec.name == "krijt" || spec.name == "jkr-viscoelastic"
-                         ? models::krijt_parameters(spec, pair).dissipative_constant
-                         : models::dissipative_constant(spec, pair);
-    c.dissipative_constant = a;
-    c.e_d = analytic::cor_viscous_k13(a, c.hertz_time_k13_22);  // K13 (26)
-    c.e_i = analytic::cor_independent(c.e_jkr, *c.e_d);         // K13 (27)
-  }
-  if (spec.name == "adhesive-viscoelastic") {
+  c.e_jkr = analytic::cor_jkr(v, *c.sticking_velocity_jkr);                     // K13 (24)
+  c.tabor_parameter = contact::surface::tabor_parameter(r, e, gamma, model.z0);  // K13 (11)
+  if (model.adhesion == models::Adhesion::weak) {
     const double w0 = analytic::tensile_work(r, e, gamma);  // BP04 (8.95)
-    const ViscoelasticScales s = viscoelastic_scales(pair, spec, v);
+    const ViscoelasticScales s = viscoelastic_scales(pair, model, v);
     c.tensile_work_bp04_8_95 = w0;
     c.e_ad_bp04_8_98 =  // BP04 (8.98)
         analytic::cor_adhesive_bp04(analytic::master_cor(s.kappa, models::EndRule::overlap), v, w0, m);
   }
-  if (spec.yield_strength) {
-    c.yield_velocity = analytic::yield_velocity(r, m, e, *spec.yield_strength);  // K13 (28)
-    c.e_plastic = analytic::cor_thornton_ning(v, *c.yield_velocity);            // K13 (29)
-    c.plastic_length_scale = analytic::plastic_length_scale(m, v, r, e);        // K13 (33)
+}
+
+}  // namespace
+
+ClosedForms closed_forms(const Pair& pair, const models::Model& model, double v) {
+  ClosedForms c;
+  const double r = pair.effective_radius(), e = pair.effective_modulus(), m = pair.effective_mass();
+  c.hertz_time_k13_22 = analytic::hertz_contact_time_k13(m, r, e, v);  // K13 (22)
+  const auto gamma = pair.surface_energy();
+  if (gamma && *gamma > 0.0) add_adhesive(c, pair, model, *gamma, v);
+  if (model.dissipative_constant) {
+    c.dissipative_constant = *model.dissipative_constant;
+    c.e_d = analytic::cor_viscous_k13(*c.dissipative_constant, c.hertz_time_k13_22);  // K13 (26)
+    if (c.e_jkr) c.e_i = analytic::cor_independent(*c.e_jkr, *c.e_d);                // K13 (27)
+  }
+  if (model.yield_strength) {
+    c.yield_velocity = analytic::yield_velocity(r, m, e, *model.yield_strength);  // K13 (28)
+    c.e_plastic = analytic::cor_thornton_ning(v, *c.yield_velocity);             // K13 (29)
+    c.plastic_length_scale = analytic::plastic_length_scale(m, v, r, e);         // K13 (33)
   }
   return c;
 }
 
-std::vector<std::pair<std::string, double>> named_values(const AdhesiveClosedForms& c) {
-  std::vector<std::pair<std::string, double>> v = {{"sticking_velocity_jkr", c.sticking_velocity_jkr},
-                                                   {"sticking_velocity_k13_25", c.sticking_velocity_k13_25},
-                                                   {"e_jkr", c.e_jkr},
-                                                   {"hertz_time_k13_22", c.hertz_time_k13_22},
-                                                   {"tabor_parameter", c.tabor_parameter}};
+std::vector<std::pair<std::string, double>> named_values(const ClosedForms& c) {
+  std::vector<std::pair<std::string, double>> v;
   const auto put = [&v](const char* key, const std::optional<double>& x) {
     if (x) v.emplace_back(key, *x);
   };
+  put("sticking_velocity_jkr", c.sticking_velocity_jkr);
+  put("sticking_velocity_k13_25", c.sticking_velocity_k13_25);
+  put("e_jkr", c.e_jkr);
+  v.emplace_back("hertz_time_k13_22", c.hertz_time_k13_22);
+  put("tabor_parameter", c.tabor_parameter);
   put("dissipative_constant", c.dissipative_constant);
   put("e_d", c.e_d);
   put("e_i", c.e_i);
@@ -62,4 +67,4 @@ std::vector<std::pair<std::string, double>> named_values(const AdhesiveClosedFor
   return v;
 }
 
-}  // namespace bounce
+}  // namespace bounce::analysis

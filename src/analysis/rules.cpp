@@ -7,7 +7,7 @@
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 
-namespace bounce {
+namespace bounce::analysis {
 
 namespace {
 
@@ -87,7 +87,7 @@ CollisionRuleResult apply_restitution(const Pair& pair, const Vector3& normal, c
   return r;
 }
 
-CollisionRuleResult collide_grains(const Pair& pair, const models::ModelSpec& model, const Vector3& normal,
+CollisionRuleResult collide_grains(const Pair& pair, const models::Model& model, const Vector3& normal,
                                    const GrainMotion& grain1, const GrainMotion& grain2,
                                    const CollideOptions& options) {
   const ContactVelocity c = contact_velocity(pair, normal, grain1, grain2);
@@ -96,7 +96,7 @@ CollisionRuleResult collide_grains(const Pair& pair, const models::ModelSpec& mo
   }
   CollideOptions o = options;
   // Without a friction coefficient the grains are smooth: eps^T = 1.
-  o.tangential_velocity = model.friction ? c.tangential_speed : 0.0;
+  o.tangential_velocity = model.tangential ? c.tangential_speed : 0.0;
   const dynamics::CollisionOutcome out = collide(pair, model, c.normal_speed, o);
   double cor_tangential = 1.0;  // no tangential motion: nothing to restitute
   if (out.outcome == dynamics::Outcome::stick) {
@@ -116,4 +116,4 @@ double kinetic_energy(const Pair& pair, const GrainMotion& grain1, const GrainMo
   return of(pair.body1(), grain1) + of(pair.body2(), grain2);
 }
 
-}  // namespace bounce
+}  // namespace bounce::analysis

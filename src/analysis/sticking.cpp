@@ -5,16 +5,50 @@
 #include <boost/math/tools/roots.hpp>
 #include <fmt/format.h>
 
+#include "bisect.hpp"
 #include "bounce/analytic/adhesive.hpp"
 #include "bounce/analytic/master_curve.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
 #include "bounce/core/error.hpp"
 
-namespace bounce {
+namespace bounce::analysis {
 
-StickingVelocity sticking_velocity(const Pair& pair, const models::ModelSpec& model,
-                                   const CollideOptions& options, double relative_tolerance) {
-  if (!models::model_info(model.name).adhesive) {
+namespace {
+
+// From a speed that sticks, up by factors of 2 until one bounces; the quasi-static models
+// hold well below the transversal sound speed (BSHP96 (B11)), so the search stops there.
+template <class Sticks>
+void bracket_upwards(StickingVelocity& s, double v, double c_t, Sticks sticks) {
+  s.lower = v;
+  s.upper = std::min(2.0 * v, c_t);
+  while (sticks(s.upper)) {
+    if (s.upper >= c_t) {
+      throw NumericalError(fmt::format(
+          "the grains stick at every speed up to the transversal sound speed c_t = {:.4g} m/s: no sticking "
+          "velocity within the quasi-static validity (BSHP96 (B11))", c_t));
+    }
+    s.lower = s.upper;
+    s.upper = std::min(2.0 * s.upper, c_t);
+  }
+}
+
+// From a speed that bounces, down by factors of 2 until one sticks.
+template <class Sticks>
+void bracket_downwards(StickingVelocity& s, double v, Sticks sticks) {
+  s.upper = v;
+  s.lower = 0.5 * v;
+  while (!sticks(s.lower)) {
+    s.upper = s.lower;
+    s.lower *= 0.5;
+    if (s.lower < 1e-8 * v) throw NumericalError(fmt::format("the grains still bounce at {:.3g} m/s", s.lower));
+  }
+}
+
+}  // namespace
+
+StickingVelocity sticking_velocity(const Pair& pair, const models::Model& model, const CollideOptions& options,
+                                   double relative_tolerance) {
+  if (!model.capabilities.adhesive) {
     throw InvalidArgument("model", model.name, "an adhesive model (adhesive-viscoelastic, jkr-viscoelastic, krijt)");
   }
   const double gamma = pair.require_surface_energy("the sticking velocity");
@@ -24,52 +58,26 @@ StickingVelocity sticking_velocity(const Pair& pair, const models::ModelSpec& mo
     return collide(pair, model, v, options).outcome == dynamics::Outcome::stick;
   };
   // Start from the elastic JKR threshold and bracket by factors of 2.
-  double v = analytic::sticking_velocity_jkr(pair.effective_mass(), pair.effective_radius(),
-                                             pair.effective_modulus(), gamma);
+  const double v = analytic::sticking_velocity_jkr(pair.effective_mass(), pair.effective_radius(),
+                                                   pair.effective_modulus(), gamma);
   if (!(v > 0.0) || !std::isfinite(v)) throw NumericalError("no starting point for the sticking velocity");
-  // The quasi-static models hold for speeds well below the transversal sound speed
-  // (BSHP96 (B11)); beyond it the search has no meaning.
-  const auto sound = [](const Material& m) {
-    return std::sqrt(m.youngs_modulus / (2.0 * m.density * (1.0 + m.poisson_ratio)));  // BSHP96 (B3)
-  };
-  double c_t = sound(pair.body1().material);
-  if (!pair.body2().rigid) c_t = std::min(c_t, sound(pair.body2().material));
   if (sticks(v)) {
-    s.lower = v;
-    s.upper = std::min(2.0 * v, c_t);
-    while (sticks(s.upper)) {
-      if (s.upper >= c_t) {
-        throw NumericalError(fmt::format(
-            "the grains stick at every speed up to the transversal sound speed c_t = {:.4g} m/s: no sticking "
-            "velocity within the quasi-static validity (BSHP96 (B11))", c_t));
-      }
-      s.lower = s.upper;
-      s.upper = std::min(2.0 * s.upper, c_t);
-    }
+    bracket_upwards(s, v, pair.transversal_sound_speed(), sticks);
   } else {
-    s.upper = v;
-    s.lower = 0.5 * v;
-    while (!sticks(s.lower)) {
-      s.upper = s.lower;
-      s.lower *= 0.5;
-      if (s.lower < 1e-8 * v) throw NumericalError(fmt::format("the grains still bounce at {:.3g} m/s", s.lower));
-    }
+    bracket_downwards(s, v, sticks);
   }
-  while (s.upper - s.lower > relative_tolerance * s.upper) {
-    const double mid = std::sqrt(s.lower * s.upper);
-    (sticks(mid) ? s.lower : s.upper) = mid;
-  }
+  std::tie(s.lower, s.upper) = detail::bisect_speed(s.lower, s.upper, sticks, relative_tolerance);
   s.velocity = std::sqrt(s.lower * s.upper);
   return s;
 }
 
-double sticking_velocity_bp04(const Pair& pair, const models::ModelSpec& model) {  // BP04 (8.100)
+double sticking_velocity_bp04(const Pair& pair, const models::Model& model) {  // BP04 (8.100)
   const double gamma = pair.require_surface_energy("BP04's sticking velocity (8.100)");
   const double w0 = analytic::tensile_work(pair.effective_radius(), pair.effective_modulus(), gamma);
   const double m = pair.effective_mass();
   const double g0 = std::sqrt(2.0 * w0 / m);
-  const double a = models::dissipative_constant(model, pair);
-  const double c0 = models::hertz_geometry(model, pair).force_constant;
+  const ViscoelasticScales scales = viscoelastic_scales(pair, model, g0);
+  const double a = scales.dissipative_constant, c0 = scales.force_constant;
   // e(g) g increases with g (e falls like g^{-1/5} at most): one root above g0.
   auto f = [&](double g) {
     return analytic::master_cor(analytic::kappa(a, c0, m, g), models::EndRule::overlap) * g - g0;
@@ -81,4 +89,4 @@ double sticking_velocity_bp04(const Pair& pair, const models::ModelSpec& model) 
   return 0.5 * (r.first + r.second);
 }
 
-}  // namespace bounce
+}  // namespace bounce::analysis

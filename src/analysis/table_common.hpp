@@ -11,12 +11,12 @@
 
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
-#include "bounce/models/registry.hpp"
+#include "bounce/models/model.hpp"
 #include "bounce/pair/pair.hpp"
 
-namespace bounce::detail {
+namespace bounce::analysis::detail {
 
-inline std::string describe(const Pair& pair, const models::ModelSpec& model) {
+inline std::string describe(const Pair& pair, const models::Model& model) {
   return fmt::format("model {}, R1 = {:g} m, R2 = {:g} m, m_eff = {:.6g} kg, E* = {:.6g} Pa{}", model.name,
                      pair.body1().radius, pair.body2().radius, pair.effective_mass(), pair.effective_modulus(),
                      pair.surface_energy() ? fmt::format(", gamma = {:g} J/m^2", *pair.surface_energy()) : "");
@@ -44,6 +44,19 @@ inline std::string with_prefix(std::string text, const std::string& prefix) {
   return text;
 }
 
+// The C99 core of a table kind with every name `tag` (e.g. "nt_") prefixed by the user's
+// prefix: "nt_cor" -> "<prefix>_nt_cor".
+inline std::string renamed_core(std::string core, const std::string& tag, const std::string& prefix) {
+  const std::string renamed = prefix + "_" + tag;
+  for (std::size_t p = core.find(tag); p != std::string::npos; p = core.find(tag, p + 1)) {
+    const bool word_start = p == 0 || !(std::isalnum(static_cast<unsigned char>(core[p - 1])) || core[p - 1] == '_');
+    if (!word_start) continue;
+    core.replace(p, tag.size(), renamed);
+    p += renamed.size() - 1;
+  }
+  return core;
+}
+
 inline void check_prefix(const std::string& prefix) {
   const bool ok = !prefix.empty() && (std::isalpha(static_cast<unsigned char>(prefix[0])) || prefix[0] == '_') &&
                   std::all_of(prefix.begin(), prefix.end(),
@@ -51,4 +64,4 @@ inline void check_prefix(const std::string& prefix) {
   if (!ok) throw InvalidArgument("prefix", prefix, "a C identifier");
 }
 
-}  // namespace bounce::detail
+}  // namespace bounce::analysis::detail

@@ -13,16 +13,16 @@ namespace {
 constexpr double pi = std::numbers::pi;
 
 // U_E + U_S on the JKR curve at contact radius a (K13 (3), (6), (8)).
-double jkr_curve_energy(const jkr::Parameters& p, double a) {
-  const double delta = jkr::overlap(p, a);
-  return independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta) +
-         independent::surface_energy(a, p.surface_energy);
+double jkr_curve_energy(const contact::jkr::Parameters& p, double a) {
+  const double delta = contact::jkr::overlap(p, a);
+  return contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta) +
+         contact::independent::surface_energy(a, p.surface_energy);
 }
 }  // namespace
 
 double jkr_collision_loss(double r, double e_star, double gamma) {
-  const jkr::Parameters p{r, e_star, gamma};
-  return jkr_curve_energy(p, jkr::separation_contact_radius(p)) - jkr_curve_energy(p, jkr::snap_on_contact_radius(p));
+  const contact::jkr::Parameters p{r, e_star, gamma};
+  return jkr_curve_energy(p, contact::jkr::separation_contact_radius(p)) - jkr_curve_energy(p, contact::jkr::snap_on_contact_radius(p));
 }
 
 double jkr_collision_loss_constant() {

@@ -9,9 +9,10 @@
 #include <boost/math/tools/roots.hpp>
 
 #include "bounce/core/checks.hpp"
+#include "bounce/contact/law.hpp"
 #include "bounce/core/error.hpp"
 
-namespace bounce::convex {
+namespace bounce::contact::convex {
 
 namespace {
 double curvature(const char* name, double radius) {
@@ -92,4 +93,102 @@ Ellipse ellipse(const ConvexContact& contact, double d, double overlap) {  // BP
   return {std::sqrt(contact.x0) * b, b};
 }
 
-}  // namespace bounce::convex
+}  // namespace bounce::contact::convex
+
+// --- the shape as parameters ---------------------------------------------------------
+
+namespace bounce::contact::convex {
+
+namespace {
+std::vector<ParameterSpec> make_shape_parameters() {
+  ParameterSpec r1;
+  r1.name = "curvature_radii";
+  r1.kind = ParameterKind::reals;
+  r1.count = 2;
+  r1.quantity = "principal radii R1,R2 of body 1";
+  r1.unit = "m";
+  r1.range = positive();
+  r1.range.infinite = true;
+  r1.help = "principal radii R1,R2 of body 1 [m] (convex bodies; inf for a flat direction)";
+  ParameterSpec r2 = r1;
+  r2.name = "curvature_radii2";
+  r2.quantity = "principal radii R1',R2' of body 2";
+  r2.help = "principal radii R1',R2' of body 2 [m] (default: as body 1, or flat for a wall)";
+  ParameterSpec angle;
+  angle.name = "angle";
+  angle.quantity = "angle phi between the planes of R1 and R1'";
+  angle.unit = "rad";
+  angle.help = "angle phi between the planes of R1 and R1' [rad] (convex bodies; default 0)";
+  return {r1, r2, angle};
+}
+}  // namespace
+
+std::span<const ParameterSpec> shape_parameters() {
+  static const std::vector<ParameterSpec> specs = make_shape_parameters();
+  return specs;
+}
+
+std::optional<Curvatures> curvatures_from(const Parameters& p, bool body2_is_wall) {
+  if (!p.given("curvature_radii") && !p.given("curvature_radii2") && !p.given("angle")) return std::nullopt;
+  if (!p.given("curvature_radii")) throw InvalidArgument("curvature_radii", "(not given)", "R1,R2 of body 1 in m");
+  const std::vector<double> r1 = *p.reals("curvature_radii");
+  constexpr double flat = std::numeric_limits<double>::infinity();
+  const std::vector<double> r2 = p.given("curvature_radii2") ? *p.reals("curvature_radii2")
+                                 : body2_is_wall             ? std::vector<double>{flat, flat}
+                                                             : r1;
+  return Curvatures{r1[0], r1[1], r2[0], r2[1], p.real("angle").value_or(0.0)};
+}
+
+}  // namespace bounce::contact::convex
+
+// --- the "hertz" contact law of convex bodies --------------------------------------------
+
+namespace bounce::contact {
+
+namespace {
+
+class ConvexHertzLaw final : public ContactLaw {
+ public:
+  ConvexHertzLaw(const Pair& pair, const convex::Curvatures& c)
+      : d_(pair.hertz_compliance_d()), shape_(convex::solve(c, d_)) {}
+
+  std::string_view name() const override { return "hertz"; }
+
+  ContactPoint at_force(double force) const override {
+    require_non_negative("force", force, "force [N] (hertz has no adhesion)");
+    const double ratio = force / shape_.force_constant;
+    return at_overlap(std::cbrt(ratio * ratio));  // BP04 (8.21) inverted
+  }
+
+  ContactPoint at_overlap(double overlap) const override {
+    require_non_negative("overlap", overlap, "overlap [m]");
+    const convex::Ellipse e = convex::ellipse(shape_, d_, overlap);
+    return {std::sqrt(e.semi_axis_a * e.semi_axis_b), overlap, convex::force(shape_, overlap)};
+  }
+
+  ContactPoint at_contact_radius(double a) const override {
+    throw InvalidArgument("contact_radius", format_value(a),
+                          "a force or an overlap for convex bodies (their contact is an ellipse)");
+  }
+
+  std::optional<AdhesionSummary> adhesion() const override { return std::nullopt; }
+
+  std::vector<std::pair<std::string, double>> shape(const ContactPoint& point) const override {
+    const convex::Ellipse e = convex::ellipse(shape_, d_, point.overlap);
+    return {{"semi_axis_a", e.semi_axis_a}, {"semi_axis_b", e.semi_axis_b}, {"x0", shape_.x0},
+            {"b1", shape_.form.b1},         {"b2", shape_.form.b2},         {"n_x0", shape_.n_x0},
+            {"m_x0", shape_.m_x0},          {"force_constant", shape_.force_constant}};
+  }
+
+ private:
+  double d_;
+  convex::ConvexContact shape_;
+};
+
+}  // namespace
+
+std::unique_ptr<ContactLaw> make_convex_hertz_law(const Pair& pair, const convex::Curvatures& curvatures) {
+  return std::make_unique<ConvexHertzLaw>(pair, curvatures);
+}
+
+}  // namespace bounce::contact

@@ -9,7 +9,7 @@
 #include "bounce/core/error.hpp"
 #include "bounce/pair/mixing.hpp"
 
-namespace bounce::dmt {
+namespace bounce::contact::dmt {
 
 double pull_off_force(const Parameters& p) {  // BP04 after (8.52)
   return -2.0 * std::numbers::pi * p.surface_energy * p.effective_radius;
@@ -29,7 +29,7 @@ double contact_radius(const Parameters& p, double overlap) {
   return hertz::contact_radius(p.effective_radius, overlap);
 }
 
-}  // namespace bounce::dmt
+}  // namespace bounce::contact::dmt
 
 // --- the "dmt" contact law -------------------------------------------------------
 

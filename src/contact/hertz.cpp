@@ -7,7 +7,7 @@
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 
-namespace bounce::hertz {
+namespace bounce::contact::hertz {
 
 double force(double hertz_constant, double overlap) {  // BP04 (8.24)
   return overlap > 0.0 ? hertz_constant * overlap * std::sqrt(overlap) : 0.0;
@@ -35,7 +35,7 @@ double max_pressure(double force, double contact_radius) {  // BP04 (8.10) at th
   return 3.0 * force / (2.0 * std::numbers::pi * contact_radius * contact_radius);
 }
 
-}  // namespace bounce::hertz
+}  // namespace bounce::contact::hertz
 
 // --- the "hertz" contact law -----------------------------------------------------
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace bounce::independent {
+namespace bounce::contact::independent {
 
 double pressure(const Geometry& g, double a, double delta, double r) {  // K13 (1)
   const double R = g.effective_radius;
@@ -36,4 +36,4 @@ double surface_energy(double a, double gamma) {  // K13 (6)
   return -std::numbers::pi * a * a * gamma;
 }
 
-}  // namespace bounce::independent
+}  // namespace bounce::contact::independent

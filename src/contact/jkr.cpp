@@ -10,7 +10,7 @@
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 
-namespace bounce::jkr {
+namespace bounce::contact::jkr {
 
 namespace {
 constexpr double pi = std::numbers::pi;
@@ -118,7 +118,7 @@ double separation_contact_radius(double d, double gamma, double R) {  // BP04 (8
 
 }  // namespace bp04
 
-}  // namespace bounce::jkr
+}  // namespace bounce::contact::jkr
 
 // --- the "jkr" contact law -------------------------------------------------------
 

@@ -13,7 +13,7 @@
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 
-namespace bounce::maugis {
+namespace bounce::contact::maugis {
 
 namespace {
 
@@ -172,7 +172,7 @@ Scales scales(double R, double e_star, double gamma) {
   return s;
 }
 
-}  // namespace bounce::maugis
+}  // namespace bounce::contact::maugis
 
 // --- the "maugis" contact law ----------------------------------------------------
 

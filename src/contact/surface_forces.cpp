@@ -1,9 +1,11 @@
 #include "bounce/contact/surface_forces.hpp"
 
 #include <cmath>
+
+#include <fmt/format.h>
 #include <numbers>
 
-namespace bounce::surface {
+namespace bounce::contact::surface {
 
 namespace {
 constexpr double pi = std::numbers::pi;
@@ -55,4 +57,36 @@ std::string regime_bp04(double mu) {
   return "transition";
 }
 
-}  // namespace bounce::surface
+ParameterSpec z0_parameter() {
+  ParameterSpec s;
+  s.name = "z0";
+  s.quantity = "equilibrium separation z0";
+  s.unit = "m";
+  s.range = positive();
+  s.default_value = 0.2e-9;
+  s.help =
+      "equilibrium separation z0 [m] of the surfaces: Tabor parameter K13 (11), Maugis' lambda, krijt's "
+      "sigma0 = gamma/z0 (default 2e-10)";
+  return s;
+}
+
+TaborSummary tabor_summary(double r, double e, double gamma, double z0) {
+  TaborSummary t;
+  t.z0 = z0;
+  t.tabor_parameter = tabor_parameter(r, e, gamma, z0);
+  t.tabor_parameter_bp04 = tabor_parameter_bp04(r, e, gamma, z0);
+  t.maugis_lambda = maugis_parameter(r, e, gamma, z0);
+  t.regime_k13 = regime_k13(t.tabor_parameter);
+  t.regime_bp04 = regime_bp04(t.tabor_parameter_bp04);
+  return t;
+}
+
+std::string regime_warning(const TaborSummary& t, std::string_view law) {
+  if ((law != "jkr" && law != "dmt") || t.regime_k13 == law) return "";
+  return fmt::format(
+      "Tabor parameter mu = {:.3g} (K13 (11), z0 = {:g} m): K13 puts this pair in the {} "
+      "regime (JKR for mu > 5, DMT for mu < 0.1); law {} may be inaccurate, maugis covers all",
+      t.tabor_parameter, t.z0, t.regime_k13, law);
+}
+
+}  // namespace bounce::contact::surface

@@ -36,8 +36,8 @@ constexpr const char* before_max_compression_note =
 
 // 2 pi a_eq^2 gamma / ((1/2) m g^2): the adhesion energy in units of the impact energy.
 double adhesion_energy_ratio(const models::KrijtParameters& p, const Scales& s) {
-  const jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
-  const double a = jkr::equilibrium_contact_radius(j);
+  const contact::jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
+  const double a = contact::jkr::equilibrium_contact_radius(j);
   return 2.0 * pi * a * a * p.surface_energy / s.energy;
 }
 
@@ -51,8 +51,8 @@ TrajectorySample krijt_sample(const models::KrijtParameters& p, const Scales& s,
   out.dissipative_force = models::bulk_dissipative_force(p, out.contact_radius, out.rate);
   out.effective_surface_energy_ratio = models::effective_surface_energy_ratio(p, out.contact_radius, out.overlap);
   out.kinetic = 0.5 * p.effective_mass * out.rate * out.rate;
-  out.elastic = independent::elastic_energy({p.effective_radius, p.effective_modulus}, out.contact_radius, out.overlap);
-  out.surface = independent::surface_energy(out.contact_radius, p.surface_energy);
+  out.elastic = contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, out.contact_radius, out.overlap);
+  out.surface = contact::independent::surface_energy(out.contact_radius, p.surface_energy);
   out.crack_dissipated = y[3] * s.energy;
   out.bulk_dissipated = y[4] * s.energy;
   return out;
@@ -224,11 +224,10 @@ Episode krijt_episode(const models::KrijtParameters& p, double speed, const Adhe
     e.crack_dissipated += models::contact_energy(p, a, delta);
   } else {
     out.cor = 0.0;
-    e.elastic_remaining = independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta);
-    e.surface_remaining = independent::surface_energy(a, p.surface_energy);
+    e.elastic_remaining = contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta);
+    e.surface_remaining = contact::independent::surface_energy(a, p.surface_energy);
   }
-  e.closure_error = e.initial_kinetic - e.final_kinetic - e.bulk_dissipated - e.crack_dissipated -
-                    e.elastic_remaining - e.surface_remaining;
+  e.close();
   episode.outcome = std::move(out);
   return episode;
 }
@@ -306,8 +305,7 @@ CollisionOutcome krijt_collision(const models::KrijtParameters& p, double speed,
     approaching = next.approaching;
   }
   EnergyBudget& e = out.energy;
-  e.closure_error = e.initial_kinetic - e.final_kinetic - e.bulk_dissipated - e.crack_dissipated -
-                    e.elastic_remaining - e.surface_remaining;
+  e.close();
   return out;
 }
 
@@ -356,10 +354,10 @@ CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParamet
   require_non_negative("A", p.dissipative_constant, "dissipative constant A [s]");
   const Scales s = scales_for(p, speed);
   const JkrBranch branch(p);
-  const jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
-  const double delta_c = jkr::separation_overlap(j);
+  const contact::jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
+  const double delta_c = contact::jkr::separation_overlap(j);
   // Snap-on at delta = 0: a jumps from 0 to the JKR radius; -(U_E + U_S) is released (crack).
-  const double snap_release = -models::contact_energy(p, jkr::snap_on_contact_radius(j), 0.0);
+  const double snap_release = -models::contact_energy(p, contact::jkr::snap_on_contact_radius(j), 0.0);
   // Release needs U_E + U_S = U(a_c, delta_c) > 0 at the fold; the mechanical energy
   // never increases, so once it is below that the grains can never separate.
   const double release_energy = models::contact_energy(p, branch.radius(delta_c), delta_c) / s.energy;
@@ -406,8 +404,8 @@ CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParamet
     x.dissipative_force = models::bulk_dissipative_force(p, x.contact_radius, x.rate);
     x.effective_surface_energy_ratio = 1.0;
     x.kinetic = 0.5 * p.effective_mass * x.rate * x.rate;
-    x.elastic = independent::elastic_energy({p.effective_radius, p.effective_modulus}, x.contact_radius, x.overlap);
-    x.surface = independent::surface_energy(x.contact_radius, p.surface_energy);
+    x.elastic = contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, x.contact_radius, x.overlap);
+    x.surface = contact::independent::surface_energy(x.contact_radius, p.surface_energy);
     x.crack_dissipated = snap_release;
     x.bulk_dissipated = y[2] * s.energy;
     out.trajectory.push_back(x);
@@ -465,14 +463,13 @@ CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParamet
     out.outcome = Outcome::stick;
     out.cor = 0.0;
     const double delta = end[0] * s.length, a = branch.radius(delta);
-    e.elastic_remaining = independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta);
-    e.surface_remaining = independent::surface_energy(a, p.surface_energy);
+    e.elastic_remaining = contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta);
+    e.surface_remaining = contact::independent::surface_energy(a, p.surface_energy);
   }
   if (options.record_trajectory && !out.trajectory.empty() && out.outcome == Outcome::bounce) {
     out.trajectory.back().crack_dissipated = e.crack_dissipated;
   }
-  e.closure_error = e.initial_kinetic - e.final_kinetic - e.bulk_dissipated - e.crack_dissipated -
-                    e.elastic_remaining - e.surface_remaining;
+  e.close();
   return out;
 }
 

@@ -30,10 +30,10 @@ struct Scales {
 inline Scales scales_for(const models::KrijtParameters& p, double speed) {
   const double rho = hertz_constant(p.effective_modulus, p.effective_radius);
   const double xi0 = std::pow(1.25 * p.effective_mass * speed * speed / rho, 0.4);  // BP04 (8.65)
-  const jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
+  const contact::jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
   Scales s;
-  s.length = std::max(xi0, std::abs(jkr::separation_overlap(j)));
-  s.radius = std::max(std::sqrt(p.effective_radius * xi0), jkr::equilibrium_contact_radius(j));
+  s.length = std::max(xi0, std::abs(contact::jkr::separation_overlap(j)));
+  s.radius = std::max(std::sqrt(p.effective_radius * xi0), contact::jkr::equilibrium_contact_radius(j));
   s.speed = speed;
   s.time = s.length / speed;
   s.energy = 0.5 * p.effective_mass * speed * speed;
@@ -66,9 +66,9 @@ class KrijtSystem final : public StiffSystem {
   KrijtSystem(const models::KrijtParameters& p, const Scales& s, bool stick_event, double break_margin)
       : p_(p), s_(s), c_(p.crack_speed_scale()), beta_break_((1.0 - break_margin) / p.k),
         stick_event_(stick_event) {
-    const jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
-    fold_overlap_ = jkr::separation_overlap(j);
-    fold_radius_ = jkr::separation_contact_radius(j);
+    const contact::jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
+    fold_overlap_ = contact::jkr::separation_overlap(j);
+    fold_radius_ = contact::jkr::separation_contact_radius(j);
     fold_energy_ = models::contact_energy(p, fold_radius_, fold_overlap_) / s.energy;
   }
 

@@ -104,7 +104,7 @@ inline void finish_normal_outcome(CollisionOutcome& out, const NormalEnd& end, c
   e.final_kinetic = 0.5 * energy_unit * end.v * end.v;
   e.bulk_dissipated = end.dissipated * energy_unit;
   e.elastic_remaining = model.elastic_energy(xi0 * end.x);
-  e.closure_error = e.initial_kinetic - e.final_kinetic - e.bulk_dissipated - e.elastic_remaining;
+  e.close();
 }
 
 }  // namespace bounce::dynamics::detail

@@ -1,12 +1,17 @@
 #include "bounce/models/krijt.hpp"
 
 #include <cmath>
+#include <string_view>
 #include <numbers>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <fmt/format.h>
 
 #include "bounce/contact/independent.hpp"
+#include "bounce/core/error.hpp"
 #include "bounce/models/crack.hpp"
+#include "factories.hpp"
+#include "hertz_type.hpp"
 
 namespace bounce::models {
 
@@ -31,12 +36,12 @@ double krijt_dissipative_constant(double relaxation_time, const Pair& pair) {  /
 }
 
 double effective_surface_energy_ratio(const KrijtParameters& p, double a, double delta) {  // K13 (14)
-  const independent::Geometry g{p.effective_radius, p.effective_modulus};
-  return independent::effective_surface_energy(g, a, delta) / p.surface_energy;
+  const contact::independent::Geometry g{p.effective_radius, p.effective_modulus};
+  return contact::independent::effective_surface_energy(g, a, delta) / p.surface_energy;
 }
 
 double elastic_force(const KrijtParameters& p, double a, double delta) {  // K13 (2)
-  return independent::elastic_force({p.effective_radius, p.effective_modulus}, a, delta);
+  return contact::independent::elastic_force({p.effective_radius, p.effective_modulus}, a, delta);
 }
 
 double bulk_dissipative_force(const KrijtParameters& p, double a, double rate) {  // K13 (19)
@@ -44,8 +49,8 @@ double bulk_dissipative_force(const KrijtParameters& p, double a, double rate) {
 }
 
 double contact_energy(const KrijtParameters& p, double a, double delta) {  // K13 (3) + (6)
-  return independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta) +
-         independent::surface_energy(a, p.surface_energy);
+  return contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta) +
+         contact::independent::surface_energy(a, p.surface_energy);
 }
 
 double krijt_hysteresis_estimate(const KrijtParameters& p, double speed) {
@@ -78,6 +83,43 @@ InitialContact krijt_initial_contact(const KrijtParameters& p) {  // K13 appendi
   c.time = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(integrand, 0.0, 1.0, 10, 1e-12);
   c.crack_dissipated = -contact_energy(p, c.contact_radius, 0.0);
   return c;
+}
+
+// --- the registry's factories: krijt and its fast-crack limit jkr-viscoelastic -------
+
+namespace {
+
+// K13's parameters for the pair: gamma of the pair, T_vis, A (given, or T_vis / nu^2 by
+// K13 after (18)), z0 and k. krijt needs T_vis (its crack law); jkr-viscoelastic A or T_vis.
+Model dynamic_contact(const Pair& pair, const Parameters& p, std::string_view name, bool instantaneous) {
+  KrijtParameters k;
+  k.effective_radius = pair.effective_radius();
+  k.effective_modulus = pair.effective_modulus();
+  k.effective_mass = pair.effective_mass();
+  k.surface_energy = detail::adhesive_surface_energy(pair, name);
+  if (p.given("tvis")) {
+    k.relaxation_time = *p.real("tvis");
+  } else if (!instantaneous || !p.given("A")) {
+    throw InvalidArgument("tvis", "(not given)", fmt::format("a viscous relaxation time T_vis > 0 s (model {})", name));
+  }
+  k.dissipative_constant = p.given("A") ? *p.real("A") : krijt_dissipative_constant(k.relaxation_time, pair);
+  k.z0 = *p.real("z0");
+  if (!instantaneous) k.k = *p.real("k");
+  Model m;
+  m.dynamic_contact = DynamicContact{k, instantaneous};
+  m.dissipative_constant = k.dissipative_constant;
+  m.viscous_time = p.given("tvis") ? k.relaxation_time : k.dissipative_constant;
+  m.z0 = k.z0;
+  m.adhesion = Adhesion::modelled;
+  return m;
+}
+
+}  // namespace
+
+Model make_krijt(const Pair& pair, const Parameters& p) { return dynamic_contact(pair, p, "krijt", false); }
+
+Model make_jkr_viscoelastic(const Pair& pair, const Parameters& p) {
+  return dynamic_contact(pair, p, "jkr-viscoelastic", true);
 }
 
 }  // namespace bounce::models

@@ -1,200 +1,205 @@
 #include "bounce/models/registry.hpp"
 
-#include <cmath>
-#include <numbers>
+#include <algorithm>
+#include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
-#include "bounce/core/checks.hpp"
+#include "bounce/contact/convex.hpp"
 #include "bounce/core/error.hpp"
+#include "catalogue.hpp"
+#include "factories.hpp"
 
 namespace bounce::models {
 
-const std::vector<ModelInfo>& collision_models() {
-  static const std::vector<ModelInfo> table = {
-      {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)", true, false, false},
+namespace {
+
+using namespace catalogue;
+
+// The checked-in table: one row per model (keyword, summary, references, capabilities, own
+// parameters, factory). To add a model, write src/models/<model>.cpp with its factory
+// (declared in factories.hpp) and add its row here: the CLI, Python and docs/models.md
+// take it from this table.
+std::vector<ModelRow> builtin_rows() {
+  return {
+      {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)",
+       Capabilities{.master_curve = true, .convex = true}, {}, &make_hertz},
       {"viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'",
-       "BP04 (8.42), BSHP96 (24)", true, false, false},
-      {"viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero",
-       "BSHP96 (25)", false, false, false},
-      {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", false, false, false},
+       "BP04 (8.42), BSHP96 (24)", Capabilities{.master_curve = true, .convex = true},
+       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic},
+      {"viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero", "BSHP96 (25)",
+       Capabilities{.convex = true},
+       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic_shifted},
+      {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", Capabilities{},
+       {power_d1(), power_alpha(), power_d2(), power_beta(), power_gamma()}, &make_power_law},
       {"adhesive-viscoelastic", "BP04's quasi-static adhesive force (8.56) with its dissipation (8.57)",
-       "BP04 (8.56)-(8.58), SPEC §4.1", false, true, false},
+       "BP04 (8.56)-(8.58), docs/adhesive.md", Capabilities{.adhesive = true},
+       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time(), dissipative_constant_b(), z0()},
+       &make_adhesive_viscoelastic},
       {"jkr-viscoelastic", "contact radius on the JKR equilibrium (instantaneous crack) plus the bulk force",
-       "K13 (8), (9), (19), (20)", false, true, true},
+       "K13 (8), (9), (19), (20)", Capabilities{.adhesive = true, .dynamic_contact = true},
+       {relaxation_time(), dissipative_constant(), z0()}, &make_jkr_viscoelastic},
       {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
-       "K13 (2), (14)-(21), appendices B, C", false, true, true},
+       "K13 (2), (14)-(21), appendices B, C", Capabilities{.adhesive = true, .dynamic_contact = true, .stiff = true},
+       {relaxation_time(), dissipative_constant(), z0(), k()}, &make_krijt},
   };
-  return table;
 }
 
-const ModelInfo& model_info(const std::string& name) {
-  for (const ModelInfo& info : collision_models()) {
-    if (info.name == name) return info;
+ParameterSpec spec(std::string name, ParameterKind kind, std::string quantity, std::string unit, std::string help) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.kind = kind;
+  s.quantity = std::move(quantity);
+  s.unit = std::move(unit);
+  s.help = std::move(help);
+  return s;
+}
+
+ParameterSpec choice(std::string name, std::vector<std::string> choices, std::string help) {
+  ParameterSpec s = spec(std::move(name), ParameterKind::choice, "", "", std::move(help));
+  s.quantity = s.name;
+  s.default_value = choices.front();
+  s.choices = std::move(choices);
+  return s;
+}
+
+ParameterSpec real(std::string name, std::string quantity, std::string unit, Range range, std::string help) {
+  ParameterSpec s = spec(std::move(name), ParameterKind::real, std::move(quantity), std::move(unit), std::move(help));
+  s.range = range;
+  return s;
+}
+
+// Every model: the end rule, plastic losses, the tangential law, the method.
+std::vector<ParameterSpec> every_model() {
+  return {
+      choice("contact_end", {"overlap", "force"}, "overlap | force: when the contact ends (default overlap)"),
+      real("yield", "yield strength Y", "Pa", positive(),
+           "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
+      real("friction", "friction coefficient mu", "", non_negative(), "friction coefficient mu (BSHP96 (36))"),
+      real("asperity", "asperity size zeta0", "m", positive(), "asperity size zeta0 [m] (BSHP96 (32); asperity law)"),
+      choice("tangential_law", {"asperity", "step"}, "asperity (BSHP96 (35), default) | step (BSHP96 (39))"),
+      choice("asperity_form", {"published", "passive"},
+             "published (BSHP96 (35), default) | passive (no energy from the changing stiffness)"),
+      real("shear_damping", "shear damping gamma_s", "1/s", non_negative(), "gamma_s [1/s] (BSHP96 (39); step law)"),
+      choice("method", {"auto", "integrate", "master"}, "auto | integrate | master (default: master where valid)"),
+  };
+}
+
+ParameterSpec tolerance(std::string name, double lo, double fallback, std::string help) {
+  ParameterSpec s = real(std::move(name), "tolerance", "", open_interval(lo, 1e-3), std::move(help));
+  s.default_value = fallback;
+  return s;
+}
+
+// What the capabilities add: convex shapes, the integrators' settings.
+std::vector<ParameterSpec> by_capabilities(const Capabilities& c) {
+  std::vector<ParameterSpec> out = every_model();
+  if (c.convex) {
+    const auto shape = contact::convex::shape_parameters();
+    out.insert(out.end(), shape.begin(), shape.end());
   }
-  std::vector<std::string> names;
-  for (const ModelInfo& info : collision_models()) names.push_back(info.name);
-  throw InvalidArgument("model", name, fmt::format("one of {}", fmt::join(names, ", ")));
+  if (c.dynamic_contact) {
+    out.push_back(tolerance("adhesive_tolerance", 1e-14, 1e-8,
+                            "relative tolerance of krijt / jkr-viscoelastic integration (default 1e-8)"));
+  } else {
+    out.push_back(tolerance("tolerance", 1e-15, 1e-12,
+                            "relative and absolute tolerance of direct integration (default 1e-12)"));
+  }
+  if (c.stiff) out.push_back(choice("stiff_engine", {"rodas", "cvode"}, "krijt: rodas | cvode (default rodas; cvode cross-checks)"));
+  return out;
+}
+
+// The tangential law of the parameters (kappa of BSHP96 (8) from the pair's moments of
+// inertia), when a friction coefficient or another of its parameters is given.
+std::optional<TangentialModel> tangential_model(const Pair& pair, const Parameters& p) {
+  const bool any = p.given("friction") || p.given("asperity") || p.given("shear_damping") ||
+                   p.given("tangential_law") || p.given("asperity_form");
+  if (!any) return std::nullopt;
+  TangentialModel t;
+  t.law = parse_tangential_law(p.text("tangential_law"));
+  t.form = parse_asperity_form(p.text("asperity_form"));
+  t.kappa = pair.tangential_mass_factor();
+  t.friction = p.require_real("friction", "a friction coefficient mu >= 0 (BSHP96 (36))");
+  if (t.law == TangentialLaw::asperity) {
+    t.asperity_size = p.require_real("asperity", "an asperity size zeta0 > 0 m (BSHP96 (32))");
+  } else {
+    t.shear_damping = p.require_real("shear_damping", "a shear damping gamma_s >= 0 1/s (BSHP96 (39))");
+  }
+  validate(t);
+  return t;
+}
+
+}  // namespace
+
+const ModelRow& ModelRegistry::add(ModelRow row) {
+  if (std::any_of(rows_.begin(), rows_.end(), [&](const ModelRow& r) { return r.name == row.name; })) {
+    throw InvalidArgument("model", row.name, "a keyword no other model has");
+  }
+  for (ParameterSpec& s : by_capabilities(row.capabilities)) row.parameters.push_back(std::move(s));
+  for (std::size_t i = 0; i < row.parameters.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (row.parameters[i].name == row.parameters[j].name) {
+        throw InvalidArgument("parameter", row.parameters[i].name, "declared once per model");
+      }
+    }
+  }
+  rows_.push_back(std::move(row));
+  return rows_.back();
+}
+
+const ModelRow& ModelRegistry::at(std::string_view name) const {
+  for (const ModelRow& row : rows_) {
+    if (row.name == name) return row;
+  }
+  throw InvalidArgument("model", std::string(name), fmt::format("one of {}", fmt::join(names(), ", ")));
+}
+
+std::vector<std::string> ModelRegistry::names() const {
+  std::vector<std::string> out;
+  for (const ModelRow& row : rows_) out.push_back(row.name);
+  return out;
+}
+
+ModelRegistry& model_registry() {
+  static ModelRegistry registry = [] {
+    ModelRegistry r;
+    for (ModelRow& row : builtin_rows()) r.add(std::move(row));
+    return r;
+  }();
+  return registry;
+}
+
+std::span<const ParameterSpec> shared_model_parameters() {
+  static const std::vector<ParameterSpec> all =
+      by_capabilities(Capabilities{.adhesive = true, .dynamic_contact = true, .stiff = true, .convex = true});
+  return all;
+}
+
+Parameters bind_model_parameters(std::string_view name, const ParameterInputs& inputs) {
+  const ModelRow& row = model_registry().at(name);
+  return bind_parameters(row.parameters, inputs, fmt::format("model {}", row.name));
+}
+
+Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
+  const ModelRow& row = model_registry().at(name);
+  Model m = row.factory(pair, p);
+  m.name = row.name;
+  m.capabilities = row.capabilities;
+  m.end_rule = parse_end_rule(p.text("contact_end"));
+  m.yield_strength = p.real("yield");
+  m.tangential = tangential_model(pair, p);
+  return m;
+}
+
+Model make_model(const Pair& pair, std::string_view name, const ParameterInputs& inputs) {
+  return make_model(pair, name, bind_model_parameters(name, inputs));
 }
 
 double dissipative_constant_from_viscosities(double eta1, double eta2, double e, double nu) {  // BP04 (8.38)
   const double difference = 3.0 * eta2 - eta1;
   return difference * difference / (3.0 * (3.0 * eta2 + 2.0 * eta1)) * (1.0 - nu * nu) *
          (1.0 - 2.0 * nu) / (e * nu * nu);
-}
-
-double dissipative_constant_b(const ModelSpec& spec, const Pair& pair, double a) {
-  if (spec.dissipative_constant_b) {
-    return require_non_negative("B", *spec.dissipative_constant_b, "dissipative constant B [s] of BP04 (8.57)");
-  }
-  if (spec.shear_viscosity && spec.bulk_viscosity) {
-    // SPEC §4.1: B = alpha beta = (3 eta2 - eta1)(1 + nu)(1 - 2 nu) / (3 E nu) (BP04 (8.58) corrected).
-    const Material& m = pair.body1().material;
-    const double nu = m.poisson_ratio;
-    return (3.0 * *spec.bulk_viscosity - *spec.shear_viscosity) * (1.0 + nu) * (1.0 - 2.0 * nu) /
-           (3.0 * m.youngs_modulus * nu);
-  }
-  // With equal relaxation times of shear and dilatation (eta_i = E_i tau) both A and
-  // B equal tau (docs/adhesive.md), so B = A is the one-parameter choice.
-  return a;
-}
-
-double dissipative_constant(const ModelSpec& spec, const Pair& pair) {
-  if (spec.name == "hertz") {
-    if (spec.dissipative_constant && *spec.dissipative_constant != 0.0) {
-      throw InvalidArgument("A", format_value(*spec.dissipative_constant), "no A for the hertz model");
-    }
-    return 0.0;
-  }
-  const bool viscosities = spec.shear_viscosity || spec.bulk_viscosity;
-  if (!spec.dissipative_constant && !viscosities && spec.relaxation_time) {
-    return krijt_dissipative_constant(
-        require_positive("tvis", *spec.relaxation_time, "viscous relaxation time T_vis [s]"), pair);
-  }
-  if (spec.dissipative_constant && viscosities) {
-    throw InvalidArgument("A", format_value(*spec.dissipative_constant),
-                          "either A or the viscosities eta1, eta2, not both");
-  }
-  if (spec.dissipative_constant) {
-    return require_non_negative("A", *spec.dissipative_constant, "dissipative constant A [s]");
-  }
-  if (!viscosities) {
-    throw InvalidArgument("A", "(not given)",
-                          fmt::format("a dissipative constant A >= 0 s, eta1 and eta2, or T_vis (model {})",
-                                      spec.name));
-  }
-  if (!spec.shear_viscosity) throw InvalidArgument("eta1", "(not given)", "a shear viscosity >= 0 Pa s");
-  if (!spec.bulk_viscosity) throw InvalidArgument("eta2", "(not given)", "a bulk viscosity >= 0 Pa s");
-  const double eta1 = require_non_negative("eta1", *spec.shear_viscosity, "shear viscosity [Pa s]");
-  const double eta2 = require_non_negative("eta2", *spec.bulk_viscosity, "bulk viscosity [Pa s]");
-  if (eta1 == 0.0 && eta2 == 0.0) return 0.0;
-  // (8.38) is derived for one material; a rigid wall does not deform.
-  const Material& m1 = pair.body1().material;
-  const Material& m2 = pair.body2().material;
-  if (!pair.body2().rigid && (m1.youngs_modulus != m2.youngs_modulus || m1.poisson_ratio != m2.poisson_ratio)) {
-    throw InvalidArgument("eta1", format_value(eta1),
-                          "viscosities only for bodies of one material (BP04 (8.38)); give A for unlike pairs");
-  }
-  if (m1.poisson_ratio <= 0.0) {
-    throw InvalidArgument("nu", format_value(m1.poisson_ratio),
-                          "0 < nu < 0.5 for A from viscosities (BP04 (8.38) divides by nu^2)");
-  }
-  return dissipative_constant_from_viscosities(eta1, eta2, m1.youngs_modulus, m1.poisson_ratio);
-}
-
-HertzGeometry hertz_geometry(const ModelSpec& spec, const Pair& pair) {
-  HertzGeometry g{pair.hertz_constant(), pair.effective_radius(), pair.effective_mass()};
-  if (spec.curvatures) {
-    const double d = pair.hertz_compliance_d();
-    const convex::ConvexContact c = convex::solve(*spec.curvatures, d);
-    g.force_constant = c.force_constant;
-    // Equal-area circle: a b = sqrt(x0) (C0 D N(x0) / pi)^2 xi, from BP04 (8.19).
-    const double scale = c.force_constant * d * c.n_x0 / std::numbers::pi;
-    g.equivalent_radius = std::sqrt(c.x0) * scale * scale;
-  }
-  return g;
-}
-
-KrijtParameters krijt_parameters(const ModelSpec& spec, const Pair& pair) {
-  KrijtParameters p;
-  p.effective_radius = pair.effective_radius();
-  p.effective_modulus = pair.effective_modulus();
-  p.effective_mass = pair.effective_mass();
-  p.surface_energy = pair.require_surface_energy("model " + spec.name);
-  require_positive("gamma", p.surface_energy, fmt::format("surface energy gamma [J/m^2] (model {} needs gamma > 0)", spec.name));
-  if (spec.relaxation_time) {
-    p.relaxation_time = require_positive("tvis", *spec.relaxation_time, "viscous relaxation time T_vis [s]");
-  } else if (spec.name == "krijt" || !spec.dissipative_constant) {
-    throw InvalidArgument("tvis", "(not given)",
-                          fmt::format("a viscous relaxation time T_vis > 0 s (model {})", spec.name));
-  }
-  if (spec.dissipative_constant) {
-    p.dissipative_constant = require_non_negative("A", *spec.dissipative_constant, "dissipative constant A [s]");
-  } else {
-    p.dissipative_constant = krijt_dissipative_constant(p.relaxation_time, pair);  // K13 after (18)
-  }
-  p.z0 = require_positive("z0", spec.z0, "equilibrium separation z0 [m]");
-  p.k = require_open_interval("k", spec.k, 0.0, 1.0, "k (relaxed / instantaneous modulus)");
-  return p;
-}
-
-std::unique_ptr<NormalForceModel> make_normal_force(const ModelSpec& spec, const Pair& pair) {
-  const ModelInfo& info = model_info(spec.name);
-  if (info.dynamic_contact) {
-    throw InvalidArgument("model", spec.name, "a force-law model (krijt and jkr-viscoelastic integrate a(t))");
-  }
-  if (spec.name == "adhesive-viscoelastic") {
-    const double gamma = pair.require_surface_energy("model adhesive-viscoelastic");
-    require_positive("gamma", gamma, "surface energy gamma [J/m^2] (adhesive model needs gamma > 0)");
-    AdhesiveViscoelasticParameters a;
-    a.rho = pair.hertz_constant();
-    // BP04 (8.56): C = sqrt(6 pi gamma / D) R_eff^{3/4}
-    a.adhesion = std::sqrt(6.0 * std::numbers::pi * gamma / pair.hertz_compliance_d()) *
-                 std::pow(pair.effective_radius(), 0.75);
-    a.a = dissipative_constant(spec, pair);
-    a.b = dissipative_constant_b(spec, pair, a.a);
-    a.effective_mass = pair.effective_mass();
-    a.effective_radius = pair.effective_radius();
-    return make_adhesive_viscoelastic_force(a);
-  }
-  if (spec.name == "power-law") {
-    if (!spec.power_law) {
-      throw InvalidArgument("power_d1", "(not given)", "the power-law constants D1, D2 and exponents");
-    }
-    const PowerLawParameters& p = *spec.power_law;
-    require_positive("power_d1", p.d1, "D1 > 0");
-    require_non_negative("power_d2", p.d2, "D2");
-    require_positive("power_alpha", p.alpha, "the elastic exponent alpha");
-    require_positive("power_beta", p.beta, "the rate exponent beta");
-    require_non_negative("power_gamma", p.gamma, "the overlap exponent gamma of the dissipative term");
-    return make_power_law_force(p, pair.effective_mass(), pair.effective_radius());
-  }
-  const double a = dissipative_constant(spec, pair);
-  const HertzGeometry geometry = hertz_geometry(spec, pair);
-  if (spec.name == "viscoelastic-shifted") return make_shifted_viscoelastic_force(geometry, a);
-  return make_viscoelastic_force(geometry, a, info.name);
-}
-
-models::TangentialModel tangential_model(const ModelSpec& spec, const Pair& pair) {
-  models::TangentialModel t;
-  t.law = spec.tangential_law;
-  t.form = spec.asperity_form;
-  t.kappa = pair.tangential_mass_factor();
-  if (!spec.friction) throw InvalidArgument("friction", "(not given)", "a friction coefficient mu >= 0 (BSHP96 (36))");
-  t.friction = require_non_negative("friction", *spec.friction, "friction coefficient mu");
-  if (t.law == models::TangentialLaw::asperity) {
-    if (!spec.asperity_size) {
-      throw InvalidArgument("asperity", "(not given)", "an asperity size zeta0 > 0 m (BSHP96 (32))");
-    }
-    t.asperity_size = require_positive("asperity", *spec.asperity_size, "asperity size zeta0 [m] (BSHP96 (32))");
-  } else {
-    if (!spec.shear_damping) {
-      throw InvalidArgument("shear_damping", "(not given)", "a shear damping gamma_s >= 0 1/s (BSHP96 (39))");
-    }
-    t.shear_damping = require_non_negative("shear_damping", *spec.shear_damping, "shear damping gamma_s [1/s]");
-  }
-  validate(t);
-  return t;
 }
 
 }  // namespace bounce::models

@@ -50,4 +50,8 @@ double tangential_mass_factor(double mass1, double inertia_factor1, double mass2
   return 1.0 / inverse;
 }
 
+double transversal_sound_speed(double e, double nu, double density) {  // BSHP96 (B3)
+  return std::sqrt(e / (2.0 * density * (1.0 + nu)));
+}
+
 }  // namespace bounce

@@ -1,5 +1,6 @@
 #include "bounce/pair/pair.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -74,6 +75,14 @@ double Pair::hertz_compliance_d() const noexcept {
 
 double Pair::hertz_constant() const noexcept {
   return bounce::hertz_constant(effective_modulus_, effective_radius_);
+}
+
+double Pair::transversal_sound_speed() const {
+  auto of = [](const Material& m) {
+    return bounce::transversal_sound_speed(m.youngs_modulus, m.poisson_ratio, m.density);
+  };
+  const double c1 = of(body1_.material);
+  return body2_.rigid ? c1 : std::min(c1, of(body2_.material));
 }
 
 double Pair::require_surface_energy(const std::string& law) const {

@@ -20,7 +20,7 @@
 #include "bounce/analysis/collide.hpp"
 #include "bounce/pair/pair.hpp"
 
-namespace bounce {
+namespace bounce::analysis {
 
 using Vector3 = std::array<double, 3>;
 
@@ -56,14 +56,15 @@ CollisionRuleResult apply_restitution(const Pair& pair, const Vector3& n, const 
                                       const GrainMotion& grain2, double cor, double cor_tangential);
 
 /// The same with eps^N(g^N) and eps^T(g^N, g^T) of `model` (its tangential law when
-/// g^T > 0 and a friction coefficient is given; eps^T = 1, smooth grains, otherwise).
+/// g^T > 0 and the model has one, i.e. a friction coefficient; eps^T = 1, smooth grains,
+/// otherwise).
 /// Sticking grains: eps^N = 0 and, as one body, eps^T = 0 (no relative motion at the
 /// contact afterwards).
-CollisionRuleResult collide_grains(const Pair& pair, const models::ModelSpec& model, const Vector3& n,
+CollisionRuleResult collide_grains(const Pair& pair, const models::Model& model, const Vector3& n,
                                    const GrainMotion& grain1, const GrainMotion& grain2,
                                    const CollideOptions& options = {});
 
 /// Total kinetic energy, translational and rotational [J] (a wall has none).
 double kinetic_energy(const Pair& pair, const GrainMotion& grain1, const GrainMotion& grain2);
 
-}  // namespace bounce
+}  // namespace bounce::analysis

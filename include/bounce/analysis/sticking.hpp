@@ -3,7 +3,7 @@
 
 #include "bounce/analysis/collide.hpp"
 
-namespace bounce {
+namespace bounce::analysis {
 
 struct StickingVelocity {
   double velocity = 0.0;  ///< the threshold [m/s] (geometric mean of the final bracket)
@@ -18,11 +18,12 @@ struct StickingVelocity {
 /// quasi-static models end), NumericalError.
 /// Assumes a single transition from stick (slow) to bounce (fast), as in every
 /// model here without plastic losses; with a yield strength the lowest one is found.
-StickingVelocity sticking_velocity(const Pair& pair, const models::ModelSpec& model,
-                                   const CollideOptions& options = {}, double relative_tolerance = 1e-6);
+StickingVelocity sticking_velocity(const Pair& pair, const models::Model& model, const CollideOptions& options = {},
+                                   double relative_tolerance = 1e-6);
 
 /// BP04 (8.100): the speed where (1/2) m e(g)^2 g^2 = W0, with the exact viscoelastic
-/// e(g) (master curve, overlap rule, the model's A) and W0 of (8.95).
-double sticking_velocity_bp04(const Pair& pair, const models::ModelSpec& model);
+/// e(g) (master curve, overlap rule, the model's A) and W0 of (8.95). For models with
+/// BP04's scaling (viscoelastic_scales).
+double sticking_velocity_bp04(const Pair& pair, const models::Model& model);
 
-}  // namespace bounce
+}  // namespace bounce::analysis

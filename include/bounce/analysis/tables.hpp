@@ -15,21 +15,22 @@
 
 #include "bounce/analysis/collide.hpp"
 
-namespace bounce {
+namespace bounce::analysis {
 
 /// A function of one variable, smooth between jumps: cubic Hermite between the nodes of
 /// a piece (nodes with one label), a jump between pieces (their facing nodes 1e-11 apart).
+/// Evaluated by the C99 core that the C headers carry too (src/analysis/normal_table_core.h).
 struct PiecewiseCubic {
   std::vector<double> x;      ///< nodes, ascending
   std::vector<double> f;      ///< values
   std::vector<double> slope;  ///< derivatives df/dx
-  std::vector<long> label;    ///< piece label of each node (the outcome: 1 bounce, 0 stick)
+  std::vector<double> label;  ///< piece label of each node (the outcome: 1 bounce, 0 stick)
 
   double operator()(double x) const;
   /// The value of the piece with this label at x, extrapolating it beyond its ends
   /// (the side of a jump a point inside its 1e-11 bracket belongs to).
-  double in_piece(long label, double x) const;
-  long label_at(double x) const;
+  double in_piece(double label, double x) const;
+  double label_at(double x) const;
 };
 
 struct TableOptions {
@@ -101,11 +102,11 @@ bool is_tangential_table(const std::string& json);
 /// for models it cannot tabulate: adhesive or dynamic-contact normal models, the step law
 /// or the passive form, and g^T so large that the direct integration averages dense
 /// asperity breaks (docs/tangential.md).
-TangentialTable build_tangential_table(const Pair& pair, const models::ModelSpec& model, double gn_min,
+TangentialTable build_tangential_table(const Pair& pair, const models::Model& model, double gn_min,
                                        double gn_max, double gt_min, double gt_max,
                                        const CollideOptions& options = {}, const TableOptions& table = {});
 
-NormalTable build_normal_table(const Pair& pair, const models::ModelSpec& model, double g_min, double g_max,
+NormalTable build_normal_table(const Pair& pair, const models::Model& model, double g_min, double g_max,
                                const CollideOptions& options = {}, const TableOptions& table = {});
 
-}  // namespace bounce
+}  // namespace bounce::analysis

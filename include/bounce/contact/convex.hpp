@@ -8,7 +8,12 @@
 // misses Hertz by a factor pi for spheres. Eliminating b from (8.19)-(8.20)
 // gives C0 = (pi/D) (M(x0) / (B1 x0 N(x0)^3))^{1/2}, which reproduces (8.24).
 
-namespace bounce::convex {
+#include <optional>
+#include <span>
+
+#include "bounce/core/parameters.hpp"
+
+namespace bounce::contact::convex {
 
 /// Principal radii of curvature of both bodies at the contact point [m], and
 /// the angle phi [rad] between the planes of R1 and R1'. A flat direction has
@@ -63,4 +68,11 @@ struct Ellipse {
 };
 Ellipse ellipse(const ConvexContact& contact, double hertz_compliance_d, double overlap);
 
-}  // namespace bounce::convex
+/// The shape as parameters: curvature_radii "R1,R2" of body 1, curvature_radii2 of body 2,
+/// angle phi (shared by the hertz contact law and the collision models of convex bodies).
+std::span<const ParameterSpec> shape_parameters();
+/// The curvatures given, if any (InvalidArgument without curvature_radii): body 2 is shaped
+/// like body 1 unless given, or flat when it is a wall.
+std::optional<Curvatures> curvatures_from(const Parameters& parameters, bool body2_is_wall);
+
+}  // namespace bounce::contact::convex

@@ -2,7 +2,7 @@
 // DMT adhesive contact: Hertz profile, adhesion acting in a ring outside the
 // contact (BP04 after (8.52)). F = rho xi^{3/2} - 2 pi gamma R_eff, a^2 = R_eff xi.
 
-namespace bounce::dmt {
+namespace bounce::contact::dmt {
 
 struct Parameters {
   double effective_radius = 0.0;   ///< R_eff [m]
@@ -19,4 +19,4 @@ double overlap_from_force(const Parameters& p, double force);
 /// a^2 = R_eff xi (Hertz, BP04 (8.23)).
 double contact_radius(const Parameters& p, double overlap);
 
-}  // namespace bounce::dmt
+}  // namespace bounce::contact::dmt

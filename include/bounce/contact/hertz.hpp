@@ -2,7 +2,7 @@
 // Hertz contact of two elastic spheres (no adhesion).
 // BP04 (8.23)-(8.24), K13 (4)-(5), BSHP96 (14).
 
-namespace bounce::hertz {
+namespace bounce::contact::hertz {
 
 /// BP04 (8.24): F = rho xi^{3/2}, rho = (4/3) E* sqrt(R_eff). Zero for xi <= 0.
 double force(double hertz_constant, double overlap);
@@ -18,4 +18,4 @@ double elastic_energy(double hertz_constant, double overlap);
 /// Central pressure p0 = 3F / (2 pi a^2) (BP04 (8.10) at x = y = 0, a = b).
 double max_pressure(double force, double contact_radius);
 
-}  // namespace bounce::hertz
+}  // namespace bounce::contact::hertz

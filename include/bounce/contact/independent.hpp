@@ -3,7 +3,7 @@
 // approach delta as independent variables (K13 §2.1, (1)-(3), (14)). Hertz and
 // JKR are the special relations a(delta) that minimise U_E and U_E + U_S.
 
-namespace bounce::independent {
+namespace bounce::contact::independent {
 
 struct Geometry {
   double effective_radius = 0.0;   ///< R [m]
@@ -22,4 +22,4 @@ double effective_surface_energy(const Geometry& g, double contact_radius, double
 /// K13 (6): U_S = -pi a^2 gamma [J].
 double surface_energy(double contact_radius, double gamma);
 
-}  // namespace bounce::independent
+}  // namespace bounce::contact::independent

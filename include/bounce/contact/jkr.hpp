@@ -7,7 +7,7 @@
 //    D = 3/(4E*); for a general pair BP04 says to substitute R -> 2 R_eff.
 // Tests check that the two agree for unlike pairs.
 
-namespace bounce::jkr {
+namespace bounce::contact::jkr {
 
 struct Parameters {
   double effective_radius = 0.0;   ///< R_eff [m]
@@ -61,4 +61,4 @@ double separation_force(double gamma, double radius);
 double separation_contact_radius(double d, double gamma, double radius);
 }  // namespace bp04
 
-}  // namespace bounce::jkr
+}  // namespace bounce::contact::jkr

@@ -3,8 +3,10 @@
 //
 // Registry: one keyword <-> one row of `contact_laws()` <-> one class <-> one file.
 // To add a law: implement ContactLaw in src/contact/<law>.cpp, declare its
-// factory below, and add a row to the table in src/contact/law.cpp.
+// factory below, and add a row (with the parameters it takes) to the table in
+// src/contact/law.cpp.
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "bounce/contact/convex.hpp"
+#include "bounce/core/parameters.hpp"
 #include "bounce/pair/pair.hpp"
 
 namespace bounce::contact {
@@ -50,32 +54,43 @@ class ContactLaw {
   virtual ContactPoint at_contact_radius(double contact_radius) const = 0;
   /// Pull-off and zero-load quantities; empty for non-adhesive laws.
   virtual std::optional<AdhesionSummary> adhesion() const = 0;
+  /// The shape of the contact at a point, by name, where it is not a circle (the contact
+  /// ellipse of convex bodies: semi-axes, x0, B1, B2, N(x0), M(x0), C0); empty for spheres.
+  virtual std::vector<std::pair<std::string, double>> shape(const ContactPoint& point) const {
+    (void)point;
+    return {};
+  }
 };
 
-/// Options some laws need.
-struct LawOptions {
-  double z0 = 0.2e-9;  ///< equilibrium separation of the surfaces [m] (Maugis-Dugdale)
-};
-
-struct LawInfo {
+/// One row of the registry of contact laws.
+struct LawRow {
   std::string name;
-  bool needs_surface_energy;
+  bool needs_surface_energy = false;
   std::string summary;
   std::string references;
+  std::vector<ParameterSpec> parameters;  ///< z0 of the adhesive laws, curvature radii of hertz
+  std::function<std::unique_ptr<ContactLaw>(const Pair&, const Parameters&)> factory;
 };
 
-/// The registry table.
-const std::vector<LawInfo>& contact_laws();
+/// The registry table (src/contact/law.cpp).
+const std::vector<LawRow>& contact_laws();
+/// The row of `name`; InvalidArgument("law", name, "one of …") if unknown.
+const LawRow& contact_law(std::string_view name);
 
-/// The law called `name` for `pair`; InvalidArgument("law", name, "one of …") if
-/// unknown, InvalidArgument("gamma", …) if it needs a surface energy the pair lacks.
+/// The law called `name` for `pair` with its parameters (bound to its row);
+/// InvalidArgument("gamma", …) if it needs a surface energy the pair lacks.
+std::unique_ptr<ContactLaw> make_contact_law(std::string_view name, const Pair& pair, const Parameters& parameters);
+/// The same from unchecked inputs (a name the law does not take is an InvalidArgument).
 std::unique_ptr<ContactLaw> make_contact_law(std::string_view name, const Pair& pair,
-                                             const LawOptions& options = {});
+                                             const ParameterInputs& inputs = {});
 
 // Factories, one per law (defined beside each law's equations).
 std::unique_ptr<ContactLaw> make_hertz_law(const Pair& pair);
 std::unique_ptr<ContactLaw> make_jkr_law(const Pair& pair);
 std::unique_ptr<ContactLaw> make_dmt_law(const Pair& pair);
 std::unique_ptr<ContactLaw> make_maugis_law(const Pair& pair, double z0);
+/// Hertz for general convex bodies (BP04 (8.6)-(8.21)): F = C0 xi^{3/2}, the contact an ellipse
+/// whose equal-area circle gives the contact radius; no contact-radius parametrisation.
+std::unique_ptr<ContactLaw> make_convex_hertz_law(const Pair& pair, const convex::Curvatures& curvatures);
 
 }  // namespace bounce::contact

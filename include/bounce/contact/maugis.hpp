@@ -14,7 +14,7 @@
 // We solve (MD1) for s = sqrt(m^2-1) (arcsec m = atan s), which keeps both limits
 // free of cancellation.
 
-namespace bounce::maugis {
+namespace bounce::contact::maugis {
 
 /// A point on the non-dimensional Maugis-Dugdale curve.
 struct Point {
@@ -64,4 +64,4 @@ struct Scales {
 };
 Scales scales(double effective_radius, double effective_modulus, double gamma);
 
-}  // namespace bounce::maugis
+}  // namespace bounce::contact::maugis

@@ -3,8 +3,11 @@
 // which adhesive contact theory applies (BP04 (8.53)-(8.55), K13 (11)).
 
 #include <string>
+#include <string_view>
 
-namespace bounce::surface {
+#include "bounce/core/parameters.hpp"
+
+namespace bounce::contact::surface {
 
 /// BP04 (8.53): Lennard-Jones pressure P_s(h) = H/(6 pi h^3) [z0^6/h^6 - 1] [Pa]
 /// (positive = repulsive) at separation h, Hamaker constant H [J], equilibrium z0 [m].
@@ -34,4 +37,20 @@ std::string regime_k13(double tabor_k13);
 /// "jump-into-contact" above 10 (both fail), else "transition".
 std::string regime_bp04(double tabor_bp04);
 
-}  // namespace bounce::surface
+/// The parameter z0 [m] (default 2e-10 m: K13 does not state the one it used).
+ParameterSpec z0_parameter();
+
+/// The Tabor parameters of a pair and the regimes they put it in.
+struct TaborSummary {
+  double z0 = 0.0;                    ///< [m]
+  double tabor_parameter = 0.0;       ///< K13 (11)
+  double tabor_parameter_bp04 = 0.0;  ///< BP04 (8.55)
+  double maugis_lambda = 0.0;         ///< 1.157 mu
+  std::string regime_k13;
+  std::string regime_bp04;
+};
+TaborSummary tabor_summary(double effective_radius, double effective_modulus, double gamma, double z0);
+/// The warning for a law ("jkr", "dmt") used outside its regime by K13 §2.1.2, or "".
+std::string regime_warning(const TaborSummary& summary, std::string_view law);
+
+}  // namespace bounce::contact::surface

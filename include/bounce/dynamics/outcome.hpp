@@ -24,6 +24,10 @@ struct EnergyBudget {
   double elastic_remaining = 0.0;   ///< elastic energy still stored when the contact ends
   double surface_remaining = 0.0;   ///< surface energy -pi a^2 gamma when the contact ends
   double closure_error = 0.0;       ///< initial minus the sum of the others
+
+  /// Sets closure_error: what the other terms leave of the initial kinetic energy (zero up
+  /// to the integration error, K13 appendix C).
+  void close();
 };
 
 /// One sample of the trajectory (SI).

@@ -53,4 +53,18 @@ TangentialOutcome integrate_tangential_motion(const std::vector<TrajectorySample
                                               double tangential_speed, const models::TangentialModel& tangential,
                                               const IntegrationSettings& settings = {});
 
+/// Between asperity breaks the published asperity law is linear in the spring's extension
+/// p: p'' = -K(tau) p, K = mu (xi0 / zeta0) f / kappa (BSHP96 (10) with (35); tau the scaled
+/// time of the normal collision, f its scaled normal force, taken as 0 where attractive).
+/// The fundamental solutions y1 (y1(0) = 1, y1'(0) = 0) and y2 (y2(0) = 0, y2'(0) = 1) and K
+/// at the scaled times `times` (ascending), integrated with the normal motion to `tolerance`
+/// (the eps^T tables of analysis/tables.hpp are built from them).
+struct FundamentalSample {
+  double y1 = 0.0, dy1 = 0.0, y2 = 0.0, dy2 = 0.0;
+  double stiffness = 0.0;  ///< K
+};
+std::vector<FundamentalSample> fundamental_solutions(const models::NormalForceModel& normal, double effective_mass,
+                                                     double normal_speed, const models::TangentialModel& tangential,
+                                                     const std::vector<double>& times, double tolerance);
+
 }  // namespace bounce::dynamics

@@ -1,7 +1,7 @@
 #pragma once
 // Normal force laws F(xi, d xi/dt) between two colliding bodies (SI units).
 //
-// One class per law (one keyword each, see registry.hpp):
+// One class per law, each in its own file with its registry factory (registry.hpp):
 //   hertz                 F = C0 xi^{3/2}                               BP04 (8.21), (8.24)
 //   viscoelastic          F = C0 (xi^{3/2} + (3/2) A sqrt(xi) xi')      BP04 (8.37), (8.42); BSHP96 (24)
 //   viscoelastic-shifted  F = C0 max(xi + A xi', 0)^{3/2}               BSHP96 (25), clamped at zero
@@ -39,6 +39,10 @@ class NormalForceModel {
   /// force that is singular at xi = 0 (BP04 footnote 2).
   virtual double cutoff_overlap(double speed) const { (void)speed; return 0.0; }
 };
+
+/// BP04 (8.65) for an elastic force m D1 xi^alpha: the maximal overlap at impact speed g,
+/// xi0 = ((1 + alpha) / (2 D1))^{1/(1+alpha)} g^{2/(1+alpha)}.
+double power_law_reference_overlap(double d1, double alpha, double speed);
 
 /// Geometry and inertia shared by the Hertz-type laws.
 struct HertzGeometry {

@@ -36,4 +36,7 @@ double sphere_mass(double radius, double density);
 double tangential_mass_factor(double mass1, double inertia_factor1, double mass2,
                               double inertia_factor2);
 
+/// BSHP96 (B3): transversal speed of sound c_t = sqrt(E / (2 rho (1 + nu))) [m/s].
+double transversal_sound_speed(double youngs_modulus, double poisson_ratio, double density);
+
 }  // namespace bounce

@@ -51,6 +51,9 @@ class Pair {
   /// gamma, or InvalidArgument("gamma", "(not given)", …) naming `law` as the
   /// one that needs it.
   double require_surface_energy(const std::string& law) const;
+  /// The smaller transversal sound speed of the deforming bodies (BSHP96 (B3)) [m/s]: the
+  /// quasi-static models hold for impact speeds well below it (BSHP96 (B11)).
+  double transversal_sound_speed() const;
 
  private:
   Body body1_;

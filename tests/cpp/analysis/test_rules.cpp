@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include "model_helpers.hpp"
+
 #include "bounce/analysis/rules.hpp"
 
 using namespace bounce;
+using namespace bounce::analysis;
 
 namespace {
 
@@ -104,18 +107,17 @@ TEST(Rules, Wall) {
 // (no friction given) keep their tangential motion; receding grains are refused.
 TEST(Rules, FromAModel) {
   const Pair pair = Pair::identical(stuff(1000.0), 0.01);
-  models::ModelSpec spec;
-  spec.dissipative_constant = 1e-6;
+  const auto spec = bounce::testing::viscoelastic(pair, 1e-6);
   const Vector3 n{1.0, 0.0, 0.0};
   const GrainMotion g1{{-0.5, 0.3, 0.0}, {}}, g2{{0.5, 0.0, 0.0}, {}};
   const auto smooth = collide_grains(pair, spec, n, g1, g2);
   EXPECT_NEAR(smooth.cor, collide(pair, spec, 1.0).cor, 1e-12);
   EXPECT_EQ(smooth.cor_tangential, 1.0);
-  spec.friction = std::sqrt(2e-4);
-  spec.asperity_size = 2e-4 * pair.effective_radius();
-  const auto rough = collide_grains(pair, spec, n, g1, g2);
+  const auto rough_model = bounce::testing::model(
+      pair, "viscoelastic", {{"A", 1e-6}, {"friction", std::sqrt(2e-4)}, {"asperity", 2e-4 * pair.effective_radius()}});
+  const auto rough = collide_grains(pair, rough_model, n, g1, g2);
   CollideOptions o;
   o.tangential_velocity = 0.3;
-  EXPECT_NEAR(rough.cor_tangential, collide(pair, spec, 1.0, o).tangential->cor, 1e-12);
-  EXPECT_THROW(collide_grains(pair, spec, {-1.0, 0.0, 0.0}, g1, g2), InvalidArgument);
+  EXPECT_NEAR(rough.cor_tangential, collide(pair, rough_model, 1.0, o).tangential->cor, 1e-12);
+  EXPECT_THROW(collide_grains(pair, rough_model, {-1.0, 0.0, 0.0}, g1, g2), InvalidArgument);
 }

@@ -13,6 +13,8 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include "model_helpers.hpp"
 #include <nlohmann/json.hpp>
 
 #include "bounce/analysis/tables.hpp"
@@ -21,25 +23,17 @@
 #include "cli/run_cli.hpp"
 
 using namespace bounce;
+using namespace bounce::analysis;
 
 namespace {
 
 Pair bshp96() { return Pair::identical(MaterialTable::builtin().at("ice-bshp96"), 0.01); }
 
-models::ModelSpec viscoelastic() {
-  models::ModelSpec s;
-  s.dissipative_constant = 1e-6;
-  return s;
-}
+models::Model viscoelastic() { return bounce::testing::viscoelastic(bshp96(), 1e-6); }
 
 // K13 §3-like: 1 um water-ice grains, crack law, T_vis = 1e-11 s (sticks below ~4.2 m/s).
 Pair k13() { return Pair::identical(MaterialTable::builtin().at("water-ice"), 1e-6); }
-models::ModelSpec krijt() {
-  models::ModelSpec s;
-  s.name = "krijt";
-  s.relaxation_time = 1e-11;
-  return s;
-}
+models::Model krijt() { return bounce::testing::model(k13(), "krijt", {{"tvis", 1e-11}}); }
 
 // The largest |table - direct| over n log-uniform random speeds in [lo, hi], and the
 // number of outcomes that differ.
@@ -47,7 +41,7 @@ struct Check {
   double worst = 0.0;
   int outcome_mismatches = 0;
 };
-Check check(const NormalTable& t, const Pair& pair, const models::ModelSpec& model, const CollideOptions& o, int n) {
+Check check(const NormalTable& t, const Pair& pair, const models::Model& model, const CollideOptions& o, int n) {
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> u(std::log(t.g_min), std::log(t.g_max));
   Check c;

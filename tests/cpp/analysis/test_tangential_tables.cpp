@@ -14,6 +14,8 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include "model_helpers.hpp"
 #include <nlohmann/json.hpp>
 
 #include "bounce/analysis/tables.hpp"
@@ -22,19 +24,20 @@
 #include "cli/run_cli.hpp"
 
 using namespace bounce;
+using namespace bounce::analysis;
 
 namespace {
 
 Pair bshp96() { return Pair::identical(MaterialTable::builtin().at("ice-bshp96"), 0.01); }
 
 // BSHP96 §III: A = 1 us, mu = sqrt(zeta0 / R_eff) (alpha = 1).
-models::ModelSpec asperity(double zeta0_over_r, const std::string& model = "viscoelastic") {
-  models::ModelSpec s;
-  s.name = model;
-  if (model != "hertz") s.dissipative_constant = 1e-6;
-  s.asperity_size = zeta0_over_r * bshp96().effective_radius();
-  s.friction = std::sqrt(zeta0_over_r);
-  return s;
+ParameterInputs asperity_inputs(double zeta0_over_r, const std::string& model = "viscoelastic") {
+  ParameterInputs in{{"asperity", zeta0_over_r * bshp96().effective_radius()}, {"friction", std::sqrt(zeta0_over_r)}};
+  if (model != "hertz") in["A"] = 1e-6;
+  return in;
+}
+models::Model asperity(double zeta0_over_r, const std::string& model = "viscoelastic") {
+  return bounce::testing::model(bshp96(), model, asperity_inputs(zeta0_over_r, model));
 }
 
 // Over n log-uniform random points of the table's range: the largest |table - direct|,
@@ -44,7 +47,7 @@ struct Check {
   int no_break = 0, few_breaks = 0, many_breaks = 0;
   int sign_changes = 0;  // points with eps^T < 0 (spin reversal)
 };
-Check check(const TangentialTable& t, const models::ModelSpec& model, int n, unsigned seed) {
+Check check(const TangentialTable& t, const models::Model& model, int n, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Check c;
@@ -150,22 +153,25 @@ TEST(TangentialTables, CHeaderCompilesStandaloneAndAgrees) {
 }
 
 TEST(TangentialTables, BadInput) {
-  auto build = [](const models::ModelSpec& m, double gt_max = 1.0) {
+  auto build = [](const models::Model& m, double gt_max = 1.0) {
     return build_tangential_table(bshp96(), m, 0.01, 10.0, 1e-3, gt_max);
   };
-  auto step = asperity(2e-4);
-  step.tangential_law = models::TangentialLaw::step;
-  step.shear_damping = 100.0;
-  EXPECT_THROW(build(step), InvalidArgument);
-  auto passive = asperity(2e-4);
-  passive.asperity_form = models::AsperityForm::passive;
-  EXPECT_THROW(build(passive), InvalidArgument);
-  auto krijt = asperity(2e-4);
-  krijt.name = "krijt";
-  EXPECT_THROW(build(krijt), InvalidArgument);
-  auto no_friction = asperity(2e-4);
-  no_friction.friction.reset();
-  EXPECT_THROW(build(no_friction), InvalidArgument);
+  auto step = asperity_inputs(2e-4);
+  step.erase("asperity");
+  step.insert({{"tangential_law", "step"}, {"shear_damping", 100.0}});
+  EXPECT_THROW(build(bounce::testing::model(bshp96(), "viscoelastic", step)), InvalidArgument);
+  auto passive = asperity_inputs(2e-4);
+  passive["asperity_form"] = "passive";
+  EXPECT_THROW(build(bounce::testing::model(bshp96(), "viscoelastic", passive)), InvalidArgument);
+  Material sticky = MaterialTable::builtin().at("ice-bshp96");
+  sticky.surface_energy = 0.1;
+  const Pair sticky_pair = Pair::identical(sticky, 0.01);
+  auto krijt = asperity_inputs(2e-4);
+  krijt.erase("A");
+  krijt["tvis"] = 1e-11;
+  EXPECT_THROW(build_tangential_table(sticky_pair, bounce::testing::model(sticky_pair, "krijt", krijt), 0.01, 10.0, 1e-3, 1.0),
+               InvalidArgument);
+  EXPECT_THROW(build(bounce::testing::viscoelastic(bshp96(), 1e-6)), InvalidArgument);  // no friction
   // Dense breaking: the direct integration averages the sawtooth there.
   EXPECT_THROW(build(asperity(2e-4), 100.0), InvalidArgument);
   EXPECT_THROW(build_tangential_table(bshp96(), asperity(2e-4), 0.01, 10.0, 1.0, 1.0), InvalidArgument);
@@ -205,7 +211,7 @@ TEST(TangentialTables, Cli) {
   expect_rejected(with({"table", "--velocities", "0.5:2", "--tangential-velocities", "1:0.1", "--csv"}),
                   "--tangential-velocities", "1:0.1");
   expect_rejected(with({"table", "--velocities", "0.5:2", "--tangential-velocities", "0.001:100", "--csv"}),
-                  "--tangential-velocity-max", "100");
+                  "--tangential-velocities", "0.001:100");
   expect_rejected(with({"table", "--velocities", "0.5:2", "--tangential-velocities", "0.001:0.1", "--tangential-law",
                         "step", "--shear-damping", "10", "--csv"}),
                   "--tangential-law", "step");

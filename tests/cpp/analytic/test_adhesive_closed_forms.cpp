@@ -51,12 +51,12 @@ TEST(AdhesiveClosedForms, ThorntonNing) {
 TEST(AdhesiveClosedForms, TensileWorkByQuadrature) {
   const double r_eff = 0.7e-6, e_star = 3.7e9, gamma = 0.37;
   const double d = 3.0 / (4.0 * e_star), r = 2.0 * r_eff;
-  const double a0 = jkr::bp04::zero_load_contact_radius(d, gamma, r);
-  const double a_sep = jkr::bp04::separation_contact_radius(d, gamma, r);
+  const double a0 = contact::jkr::bp04::zero_load_contact_radius(d, gamma, r);
+  const double a_sep = contact::jkr::bp04::separation_contact_radius(d, gamma, r);
   auto integrand = [&](double a) {
     const double h = 1e-7 * a;  // d xi / da by central differences of (8.48): error ~1e-14 relative
-    const double dxi = (jkr::bp04::compression(d, gamma, r, a + h) - jkr::bp04::compression(d, gamma, r, a - h)) / (2 * h);
-    return jkr::bp04::force(d, gamma, r, a) * dxi;
+    const double dxi = (contact::jkr::bp04::compression(d, gamma, r, a + h) - contact::jkr::bp04::compression(d, gamma, r, a - h)) / (2 * h);
+    return contact::jkr::bp04::force(d, gamma, r, a) * dxi;
   };
   const double w = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(integrand, a0, a_sep, 10, 1e-13);
   EXPECT_NEAR(w / tensile_work(r_eff, e_star, gamma), 1.0, 1e-8);

@@ -11,8 +11,10 @@
 #include "bounce/analytic/viscoelastic.hpp"
 #include "bounce/pair/materials_table.hpp"
 #include "master_reference.hpp"
+#include "model_helpers.hpp"
 
 using namespace bounce;
+using namespace bounce::analysis;
 using analytic::master_cor;
 using analytic::viscoelastic_master;
 using models::EndRule;
@@ -129,9 +131,7 @@ TEST(MasterCurve, AgreesWithDirectIntegration) {
   double worst = 0.0;
   for (int i = 0; i < 1000; ++i) {
     const double k = std::pow(10.0, log_kappa(rng));
-    models::ModelSpec spec;
-    spec.dissipative_constant = a;
-    spec.end_rule = i % 2 ? EndRule::force : EndRule::overlap;
+    const auto spec = bounce::testing::viscoelastic(ice(), a, i % 2 ? "force" : "overlap");
     const double g = speed_for(ice(), k, a);
     const double e_master = cor(ice(), spec, g);
     const double e_integrate = cor(ice(), spec, g, integrate);
@@ -146,9 +146,8 @@ TEST(MasterCurve, EqualKappaEqualCor) {
   CollideOptions integrate;
   integrate.method = Method::integrate;
   for (double k : {0.01, 0.3, 2.0}) {
-    models::ModelSpec ice_spec, steel_spec;
-    ice_spec.dissipative_constant = 1e-6;
-    steel_spec.dissipative_constant = 3e-8;
+    const auto ice_spec = bounce::testing::viscoelastic(ice(), 1e-6);
+    const auto steel_spec = bounce::testing::viscoelastic(steel_on_wall(), 3e-8);
     const double g_ice = speed_for(ice(), k, 1e-6);
     const double g_steel = speed_for(steel_on_wall(), k, 3e-8);
     EXPECT_NEAR(cor(ice(), ice_spec, g_ice, integrate), cor(steel_on_wall(), steel_spec, g_steel, integrate), 1e-10);
@@ -158,8 +157,7 @@ TEST(MasterCurve, EqualKappaEqualCor) {
 
 // A = 0 gives e = 1 and the exact Hertz contact time, by either method.
 TEST(MasterCurve, NoDissipationIsHertz) {
-  models::ModelSpec spec;
-  spec.dissipative_constant = 0.0;
+  const auto spec = bounce::testing::viscoelastic(ice(), 0.0);
   const double t_hertz = analytic::hertz_contact_time(ice().hertz_constant(), ice().effective_mass(), 2.0);
   for (Method m : {Method::master, Method::integrate}) {
     CollideOptions o;

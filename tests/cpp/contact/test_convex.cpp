@@ -40,7 +40,7 @@ TEST(Convex, SpheresReproduceHertzTo1e12) {
   const double d = hertz_compliance_d(e_star);
   for (auto [r1, r2] : {std::pair{1e-6, 1e-6}, std::pair{1e-6, 3.7e-6}, std::pair{2e-3, inf}}) {
     for (double angle : {0.0, 0.7, pi / 2}) {
-      const auto c = convex::solve({r1, r1, r2, r2, angle}, d);
+      const auto c = contact::convex::solve({r1, r1, r2, r2, angle}, d);
       const double r_eff = effective_radius(r1, r2);
       EXPECT_EQ(c.x0, 1.0);
       EXPECT_NEAR(c.n_x0, pi, 1e-15 * pi);      // BP04: N(1) = pi
@@ -48,11 +48,11 @@ TEST(Convex, SpheresReproduceHertzTo1e12) {
       const double rho = hertz_constant(e_star, r_eff);
       EXPECT_NEAR(c.force_constant / rho, 1.0, 1e-12);
       const double overlap = 1e-3 * r_eff;
-      const auto ellipse = convex::ellipse(c, d, overlap);
-      const double a = hertz::contact_radius(r_eff, overlap);
+      const auto ellipse = contact::convex::ellipse(c, d, overlap);
+      const double a = contact::hertz::contact_radius(r_eff, overlap);
       EXPECT_NEAR(ellipse.semi_axis_a / a, 1.0, 1e-12);
       EXPECT_NEAR(ellipse.semi_axis_b / a, 1.0, 1e-12);
-      EXPECT_NEAR(convex::force(c, overlap) / hertz::force(rho, overlap), 1.0, 1e-12);
+      EXPECT_NEAR(contact::convex::force(c, overlap) / contact::hertz::force(rho, overlap), 1.0, 1e-12);
     }
   }
 }
@@ -61,24 +61,24 @@ TEST(Convex, SpheresReproduceHertzTo1e12) {
 // a flat: B1 = B2 = 1/(2R). This exercises the angle term of (8.7).
 TEST(Convex, CrossedCylindersActLikeSphereOnFlat) {
   const double R = 2e-3;
-  const auto form = convex::quadratic_form({R, inf, R, inf, pi / 2});
+  const auto form = contact::convex::quadratic_form({R, inf, R, inf, pi / 2});
   EXPECT_NEAR(form.b1, 0.5 / R, 1e-12 / R);
   EXPECT_NEAR(form.b2, 0.5 / R, 1e-9 / R);
   // Parallel cylinders (phi = 0) make a line contact: outside the theory.
-  EXPECT_THROW((void)convex::quadratic_form({R, inf, R, inf, 0.0}), InvalidArgument);
+  EXPECT_THROW((void)contact::convex::quadratic_form({R, inf, R, inf, 0.0}), InvalidArgument);
 }
 
 TEST(Convex, NAndMAgreeWithQuadrature) {
   // Carlson forms vs quadrature to 1e-12: both are accurate to ~1e-14, so 1e-12 leaves margin.
   for (double x : {1e-4, 0.01, 0.1, 0.37, 1.0, 2.5, 10.0, 1e3}) {
-    EXPECT_NEAR(convex::n_function(x) / n_by_quadrature(x), 1.0, 1e-12) << x;
-    EXPECT_NEAR(convex::m_function(x) / m_by_quadrature(x), 1.0, 1e-12) << x;
+    EXPECT_NEAR(contact::convex::n_function(x) / n_by_quadrature(x), 1.0, 1e-12) << x;
+    EXPECT_NEAR(contact::convex::m_function(x) / m_by_quadrature(x), 1.0, 1e-12) << x;
   }
 }
 
 TEST(Convex, AxisRatioAgreesWithQuadratureRoot) {
   for (double ratio : {0.95, 0.5, 0.1, 0.01}) {
-    const double x0 = convex::axis_ratio_squared({1.0, ratio});
+    const double x0 = contact::convex::axis_ratio_squared({1.0, ratio});
     // Independent root: bisection on (8.18) with the quadrature N, M (60 halvings of
     // log x over [-40, 0] resolve x0 to ~1e-16 relative; the quadrature error
     // 1e-14 of M moves the root by about that over d ln r / d ln x ~ 0.5, so 1e-11 is safe).
@@ -97,14 +97,14 @@ TEST(Convex, AxisRatioAgreesWithQuadratureRoot) {
 TEST(Convex, EllipseIsConsistentWith8_19And8_20) {
   // A triaxial pair: check (8.19)-(8.20) hold for the returned semi-axes and force.
   const double d = hertz_compliance_d(effective_modulus(70e9, 0.345, 70e9, 0.345));
-  const auto c = convex::solve({1e-3, 4e-3, 2e-3, inf, 0.4}, d);
+  const auto c = contact::convex::solve({1e-3, 4e-3, 2e-3, inf, 0.4}, d);
   const double xi = 1e-7;
-  const auto e = convex::ellipse(c, d, xi);
-  const double f = convex::force(c, xi);
+  const auto e = contact::convex::ellipse(c, d, xi);
+  const double f = contact::convex::force(c, xi);
   const double b = e.semi_axis_b;
   EXPECT_NEAR(xi, f * d / pi * c.n_x0 / b, 1e-13 * xi);                                // (8.19)
   EXPECT_NEAR(c.form.b1, f * d / pi * c.m_x0 / (c.x0 * b * b * b), 1e-12 * c.form.b1);  // (8.20)
   EXPECT_NEAR(c.form.b2,
-              f * d / pi * convex::m_function(1.0 / c.x0) / (e.semi_axis_a * b * b),
+              f * d / pi * contact::convex::m_function(1.0 / c.x0) / (e.semi_axis_a * b * b),
               1e-10 * c.form.b2);  // (8.13)
 }

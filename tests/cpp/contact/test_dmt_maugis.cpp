@@ -20,12 +20,12 @@ double jkr_overlap(double A) { return A * A - std::sqrt(8.0 * A / 3.0); }
 }  // namespace
 
 TEST(Dmt, PullOffIsMinusTwoPiGammaR) {
-  const dmt::Parameters p{0.75e-6, 5e9, 0.2};
-  EXPECT_DOUBLE_EQ(dmt::pull_off_force(p), -2.0 * pi * 0.2 * 0.75e-6);
-  EXPECT_DOUBLE_EQ(dmt::force(p, 0.0), dmt::pull_off_force(p));
-  EXPECT_GT(dmt::force(p, 1e-12), dmt::pull_off_force(p));
+  const contact::dmt::Parameters p{0.75e-6, 5e9, 0.2};
+  EXPECT_DOUBLE_EQ(contact::dmt::pull_off_force(p), -2.0 * pi * 0.2 * 0.75e-6);
+  EXPECT_DOUBLE_EQ(contact::dmt::force(p, 0.0), contact::dmt::pull_off_force(p));
+  EXPECT_GT(contact::dmt::force(p, 1e-12), contact::dmt::pull_off_force(p));
   const double f = 3e-7;
-  EXPECT_NEAR(dmt::force(p, dmt::overlap_from_force(p, f)) / f, 1.0, 1e-13);
+  EXPECT_NEAR(contact::dmt::force(p, contact::dmt::overlap_from_force(p, f)) / f, 1.0, 1e-13);
 }
 
 // The JKR limit: the measured error of the pull-off force and of the zero-load radius
@@ -34,13 +34,13 @@ TEST(Dmt, PullOffIsMinusTwoPiGammaR) {
 TEST(Maugis, JkrLimit) {
   for (double lambda : {1e2, 1e3}) {
     const double bound = 1.0 / (lambda * lambda);
-    const auto pull = maugis::pull_off(lambda);
+    const auto pull = contact::maugis::pull_off(lambda);
     EXPECT_NEAR(pull.force, -1.5, 0.2 * bound) << lambda;
     EXPECT_NEAR(pull.contact_radius, std::cbrt(1.5), 1e-4) << lambda;  // flat minimum
-    EXPECT_NEAR(maugis::at_force(lambda, 0.0).contact_radius, std::cbrt(6.0), 0.5 * bound);
-    EXPECT_NEAR(maugis::min_overlap(lambda).overlap, jkr_overlap(std::cbrt(1.0 / 6.0)), 0.5 * bound);
+    EXPECT_NEAR(contact::maugis::at_force(lambda, 0.0).contact_radius, std::cbrt(6.0), 0.5 * bound);
+    EXPECT_NEAR(contact::maugis::min_overlap(lambda).overlap, jkr_overlap(std::cbrt(1.0 / 6.0)), 0.5 * bound);
     for (double A : {0.3, 1.0, 2.0}) {
-      const auto point = maugis::at_contact_radius(lambda, A);
+      const auto point = contact::maugis::at_contact_radius(lambda, A);
       EXPECT_NEAR(point.force, jkr_force(A), 5.0 * bound) << A;
       EXPECT_NEAR(point.overlap, jkr_overlap(A), 5.0 * bound) << A;
     }
@@ -54,9 +54,9 @@ TEST(Maugis, JkrLimit) {
 // correction Delta = A^2 - (8/3) sqrt(lambda/pi); we test that term to O(lambda).
 TEST(Maugis, DmtLimit) {
   for (double lambda : {1e-3, 1e-4}) {
-    EXPECT_NEAR(maugis::pull_off(lambda).force, -2.0, 2.0 * std::pow(lambda, 1.5)) << lambda;
-    EXPECT_NEAR(maugis::at_force(lambda, 0.0).contact_radius, std::cbrt(2.0), 2.0 * lambda);
-    const auto point = maugis::at_contact_radius(lambda, 1.5);
+    EXPECT_NEAR(contact::maugis::pull_off(lambda).force, -2.0, 2.0 * std::pow(lambda, 1.5)) << lambda;
+    EXPECT_NEAR(contact::maugis::at_force(lambda, 0.0).contact_radius, std::cbrt(2.0), 2.0 * lambda);
+    const auto point = contact::maugis::at_contact_radius(lambda, 1.5);
     EXPECT_NEAR(point.force, 1.5 * 1.5 * 1.5 - 2.0, 20.0 * lambda);
     EXPECT_NEAR(point.overlap, 2.25 - 8.0 / 3.0 * std::sqrt(lambda / pi), 2.0 * lambda);
   }
@@ -65,7 +65,7 @@ TEST(Maugis, DmtLimit) {
 TEST(Maugis, PullOffLiesBetweenJkrAndDmt) {
   double previous = -2.0;
   for (double lambda : {0.01, 0.1, 0.3, 1.0, 3.0, 10.0}) {
-    const double p = maugis::pull_off(lambda).force;
+    const double p = contact::maugis::pull_off(lambda).force;
     EXPECT_GT(p, previous) << lambda;  // monotone from DMT (-2) to JKR (-1.5)
     EXPECT_LT(p, -1.5);
     previous = p;
@@ -74,8 +74,8 @@ TEST(Maugis, PullOffLiesBetweenJkrAndDmt) {
 
 TEST(Maugis, ZeroRadiusLimitIsContinuous) {
   for (double lambda : {0.1, 1.0, 5.0}) {
-    const auto at0 = maugis::at_contact_radius(lambda, 0.0);
-    const auto near0 = maugis::at_contact_radius(lambda, 1e-7);
+    const auto at0 = contact::maugis::at_contact_radius(lambda, 0.0);
+    const auto near0 = contact::maugis::at_contact_radius(lambda, 1e-7);
     EXPECT_NEAR(near0.force, at0.force, 1e-5) << lambda;
     EXPECT_NEAR(near0.overlap, at0.overlap, 1e-5) << lambda;
   }

@@ -9,7 +9,7 @@
 
 #include "bounce/contact/surface_forces.hpp"
 
-using namespace bounce::surface;
+using namespace bounce::contact::surface;
 
 // BP04 (8.54): the work to separate two half-spaces from z0 to infinity against the
 // pressure (8.53) is gamma. Quadrature to 1e-14; the integrand is smooth on [z0, inf).

@@ -12,8 +12,10 @@
 #include "bounce/contact/jkr.hpp"
 #include "bounce/dynamics/adhesive_collision.hpp"
 #include "bounce/pair/materials_table.hpp"
+#include "model_helpers.hpp"
 
 using namespace bounce;
+using namespace bounce::analysis;
 using dynamics::Outcome;
 
 namespace {
@@ -28,13 +30,11 @@ double k13_sphere_radius() {
   const auto r = boost::math::tools::toms748_solve(t_h, 1e-7, 1e-5, boost::math::tools::eps_tolerance<double>(40), iterations);
   return 0.5 * (r.first + r.second);
 }
-models::ModelSpec krijt(double tvis, double z0 = 0.2e-9) {
-  models::ModelSpec s;
-  s.name = "krijt";
-  s.relaxation_time = tvis;
-  s.z0 = z0;
-  return s;
+models::Model krijt(const Pair& pair, double tvis, double z0 = 0.2e-9, ParameterInputs more = {}) {
+  more.insert({{"tvis", tvis}, {"z0", z0}});
+  return bounce::testing::model(pair, "krijt", more);
 }
+const models::KrijtParameters& krijt_parameters(const models::Model& m) { return m.dynamic_contact->parameters; }
 double fraction(double part, const dynamics::CollisionOutcome& o) { return part / o.energy.initial_kinetic; }
 }  // namespace
 
@@ -47,7 +47,7 @@ TEST(Krijt, EnergyClosure) {
       for (double v : {0.3, 3.0, 30.0}) {
         CollideOptions o;
         o.record_trajectory = true;
-        const auto out = collide(pair, krijt(tvis), v, o);
+        const auto out = collide(pair, krijt(pair, tvis), v, o);
         EXPECT_LT(std::abs(fraction(out.energy.closure_error, out)), 1e-6) << r << " " << tvis << " " << v;
         for (const auto& s : out.trajectory) {
           const double total = s.kinetic + s.elastic + s.surface + s.crack_dissipated + s.bulk_dissipated;
@@ -60,7 +60,7 @@ TEST(Krijt, EnergyClosure) {
 
 TEST(Krijt, InitialContactOfAppendixB) {
   const Pair pair = Pair::identical(ice(), 2e-6);
-  const auto p = models::krijt_parameters(krijt(1e-11), pair);
+  const auto p = krijt_parameters(krijt(pair, 1e-11));
   const auto c = models::krijt_initial_contact(p);
   EXPECT_NEAR(models::effective_surface_energy_ratio(p, c.contact_radius, 0.0), 1.01 * p.k, 1e-12);  // (B.1)
   EXPECT_NEAR(c.crack_dissipated, -models::contact_energy(p, c.contact_radius, 0.0), 1e-30);
@@ -76,10 +76,8 @@ TEST(Krijt, ViscoelasticLimit) {
     Material m = ice();
     m.surface_energy = gamma;
     const Pair pair = Pair::identical(m, 2e-6);
-    models::ModelSpec k = krijt(1e-11);
-    k.dissipative_constant = 1.6e-10;
-    models::ModelSpec v;
-    v.dissipative_constant = 1.6e-10;
+    const auto k = krijt(pair, 1e-11, 0.2e-9, {{"A", 1.6e-10}});
+    const auto v = bounce::testing::viscoelastic(pair, 1.6e-10);
     for (double speed : {1.0, 8.0}) {
       const auto out = collide(pair, k, speed);
       EXPECT_NEAR(out.cor, cor(pair, v, speed), 1e-6) << gamma << " " << speed;
@@ -99,7 +97,7 @@ TEST(Krijt, ElasticJkrLimit) {
     const double v = factor * v_c, e_jkr = analytic::cor_jkr(v, v_c);
     double previous = std::numeric_limits<double>::infinity();
     for (double tvis : {1e-12, 1e-13, 1e-14, 1e-15, 1e-16}) {
-      const double deviation = std::abs(cor(pair, krijt(tvis), v) / e_jkr - 1.0);
+      const double deviation = std::abs(cor(pair, krijt(pair, tvis), v) / e_jkr - 1.0);
       EXPECT_LT(deviation, previous) << factor << " " << tvis;
       if (tvis <= 1e-14) {
         EXPECT_LT(deviation, 0.01) << factor << " " << tvis;
@@ -114,14 +112,11 @@ TEST(Krijt, ElasticJkrLimit) {
 TEST(Krijt, FastCrackLimitIsJkrViscoelastic) {
   const Pair pair = Pair::identical(ice(), k13_sphere_radius());
   for (double v : {2.0, 8.0}) {
-    models::ModelSpec jv;
-    jv.name = "jkr-viscoelastic";
-    jv.dissipative_constant = 1.6e-10;
+    const auto jv = bounce::testing::model(pair, "jkr-viscoelastic", {{"A", 1.6e-10}});
     const double target = cor(pair, jv, v);
     double previous = std::numeric_limits<double>::infinity();
     for (double tvis : {1e-12, 1e-13, 1e-14, 1e-15, 1e-16}) {
-      models::ModelSpec k = krijt(tvis);
-      k.dissipative_constant = 1.6e-10;
+      const auto k = krijt(pair, tvis, 0.2e-9, {{"A", 1.6e-10}});
       const double difference = std::abs(cor(pair, k, v) - target);
       EXPECT_LT(difference, previous) << v << " " << tvis;
       previous = difference;
@@ -138,7 +133,7 @@ TEST(Krijt, ReductionIsContinuous) {
   for (double gamma : {3e-7, 1e-6, 3e-6}) {
     m.surface_energy = gamma;
     const Pair pair = Pair::identical(m, 2e-6);
-    const auto p = models::krijt_parameters(krijt(1e-11), pair);
+    const auto p = krijt_parameters(krijt(pair, 1e-11));
     const auto full = dynamics::integrate_krijt_collision(p, v);
     const auto reduced = dynamics::integrate_jkr_viscoelastic_collision(p, v);
     EXPECT_NEAR(full.cor, reduced.cor, 5e-8) << gamma << " estimate " << models::krijt_hysteresis_estimate(p, v);
@@ -149,9 +144,7 @@ TEST(JkrViscoelastic, ElasticLimitIsExactJkr) {
   const Pair pair = Pair::identical(ice(), 2e-6);
   const double v_c = analytic::sticking_velocity_jkr(pair.effective_mass(), pair.effective_radius(),
                                                      pair.effective_modulus(), 0.37);
-  models::ModelSpec jv;
-  jv.name = "jkr-viscoelastic";
-  jv.dissipative_constant = 0.0;
+  const auto jv = bounce::testing::model(pair, "jkr-viscoelastic", {{"A", 0.0}});
   for (double f : {1.05, 2.0, 10.0}) EXPECT_NEAR(cor(pair, jv, f * v_c), analytic::cor_jkr(f * v_c, v_c), 1e-8) << f;
   EXPECT_EQ(collide(pair, jv, 0.95 * v_c).outcome, Outcome::stick);
 }
@@ -162,27 +155,27 @@ TEST(JkrViscoelastic, ElasticLimitIsExactJkr) {
 // both significant (K13: 37% and 19%), e_A well below e_I = 0.93. docs/adhesive.md.
 TEST(Krijt, K13Section3) {
   const Pair pair = Pair::identical(ice(), k13_sphere_radius());
-  auto e_at = [&](double z0) { return cor(pair, krijt(1e-11, z0), 8.0) - 0.66; };
+  auto e_at = [&](double z0) { return cor(pair, krijt(pair, 1e-11, z0), 8.0) - 0.66; };
   std::uintmax_t iterations = 60;
   const auto bracket = boost::math::tools::toms748_solve(e_at, 0.06e-9, 0.2e-9, boost::math::tools::eps_tolerance<double>(20), iterations);
   const double z0 = 0.5 * (bracket.first + bracket.second);
   EXPECT_GT(z0, 0.07e-9);
   EXPECT_LT(z0, 0.11e-9);
-  const auto fast = collide(pair, krijt(1e-11, z0), 8.0);
-  const auto slow = collide(pair, krijt(1e-11, z0), 2.0);
+  const auto fast = collide(pair, krijt(pair, 1e-11, z0), 8.0);
+  const auto slow = collide(pair, krijt(pair, 1e-11, z0), 2.0);
   EXPECT_EQ(fast.outcome, Outcome::bounce);
   EXPECT_EQ(slow.outcome, Outcome::stick);
   EXPECT_GT(fast.contact_time, 1.4e-8);
   EXPECT_NEAR(fast.contact_time, 1.7e-8, 0.1e-8);          // K13 prints "~1.7e-8 s"
   EXPECT_NEAR(fraction(fast.energy.crack_dissipated, fast), 0.37, 0.04);
   EXPECT_NEAR(fraction(fast.energy.bulk_dissipated, fast), 0.19, 0.03);
-  const auto p = models::krijt_parameters(krijt(1e-11, z0), pair);
+  const auto p = krijt_parameters(krijt(pair, 1e-11, z0));
   const double t_h = analytic::hertz_contact_time_k13(pair.effective_mass(), pair.effective_radius(), pair.effective_modulus(), 8.0);
   const double v_c = analytic::sticking_velocity_k13(pair.effective_mass(), pair.effective_radius(), pair.effective_modulus(), 0.37);
   const double e_i = analytic::cor_independent(analytic::cor_jkr(8.0, v_c), analytic::cor_viscous_k13(p.dissipative_constant, t_h));
   EXPECT_LT(fast.cor, e_i - 0.2);
   // With the default z0 = 0.2 nm the crack is 5x faster (c ~ z0^2): less hysteresis.
-  EXPECT_GT(cor(pair, krijt(1e-11), 8.0), 0.8);
+  EXPECT_GT(cor(pair, krijt(pair, 1e-11), 8.0), 0.8);
 }
 
 // Acceptance: the sticking velocity is continuous and monotone over K13 fig. 5's ranges
@@ -194,7 +187,8 @@ TEST(Krijt, K13Section3) {
 // documented error); we follow it while v_s <= 0.1 c_t, the quasi-static validity.
 TEST(Krijt, StickingVelocityOverFigure5Ranges) {
   auto v_stick = [](double tvis, double r_eff) {
-    return sticking_velocity(Pair::identical(ice(), 2.0 * r_eff), krijt(tvis), {}, 1e-5).velocity;
+    const Pair pair = Pair::identical(ice(), 2.0 * r_eff);
+    return sticking_velocity(pair, krijt(pair, tvis), {}, 1e-5).velocity;
   };
   std::vector<double> radii;
   for (double r = 1e-4; r >= 0.99e-7; r /= std::pow(10.0, 0.25)) radii.push_back(r);
@@ -242,14 +236,11 @@ TEST(Krijt, StickingVelocityOverFigure5Ranges) {
 // at low speed. The xi^{-1/4} cutoff is converged.
 TEST(AdhesiveViscoelastic, ConservativeAdhesionAndCutoff) {
   const Pair pair = Pair::identical(ice(), 2e-6);
-  models::ModelSpec s;
-  s.name = "adhesive-viscoelastic";
-  s.dissipative_constant = 0.0;
-  s.dissipative_constant_b = 0.0;
+  const auto conservative = bounce::testing::model(pair, "adhesive-viscoelastic", {{"A", 0.0}, {"B", 0.0}});
   CollideOptions o;
   o.method = Method::integrate;
-  EXPECT_NEAR(cor(pair, s, 2.0, o), 1.0, 1e-9);
-  s.dissipative_constant = s.dissipative_constant_b = 1.6e-10;
+  EXPECT_NEAR(cor(pair, conservative, 2.0, o), 1.0, 1e-9);
+  const auto s = bounce::testing::model(pair, "adhesive-viscoelastic", {{"A", 1.6e-10}, {"B", 1.6e-10}});
   const auto out = collide(pair, s, 3.0, o);
   EXPECT_EQ(out.outcome, Outcome::bounce);
   EXPECT_LT(std::abs(fraction(out.energy.closure_error, out)), 1e-9);
@@ -260,10 +251,8 @@ TEST(AdhesiveViscoelastic, ConservativeAdhesionAndCutoff) {
 
 TEST(Krijt, PlasticLossesAdd) {
   const Pair pair = Pair::identical(ice(), 2e-6);
-  models::ModelSpec s = krijt(1e-13);
-  const double e_a = cor(pair, s, 20.0);
-  s.yield_strength = 5e7;
-  const auto out = collide(pair, s, 20.0);
+  const double e_a = cor(pair, krijt(pair, 1e-13), 20.0);
+  const auto out = collide(pair, krijt(pair, 1e-13, 0.2e-9, {{"yield", 5e7}}), 20.0);
   const double v_y = analytic::yield_velocity(pair.effective_radius(), pair.effective_mass(), pair.effective_modulus(), 5e7);
   ASSERT_LT(v_y, 20.0);
   EXPECT_NEAR(out.cor, analytic::cor_with_plastic(e_a, analytic::cor_thornton_ning(20.0, v_y)), 1e-12);  // (30)
@@ -276,9 +265,7 @@ TEST(Krijt, PlasticLossesAdd) {
 // it or without a surface energy.
 TEST(AdhesionValidity, Bp04Condition) {
   auto has_warning = [](const Pair& pair, double v) {
-    models::ModelSpec s;
-    s.dissipative_constant = 1e-10;
-    for (const auto& w : collide(pair, s, v).warnings) {
+    for (const auto& w : collide(pair, bounce::testing::viscoelastic(pair, 1e-10), v).warnings) {
       if (w.find("BP04 (8.99)") != std::string::npos) return true;
     }
     return false;

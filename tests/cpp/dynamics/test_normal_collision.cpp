@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "model_helpers.hpp"
+
 #include "bounce/analysis/collide.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
 #include "bounce/dynamics/normal_collision.hpp"
@@ -13,6 +15,7 @@
 #include "bounce/pair/materials_table.hpp"
 
 using namespace bounce;
+using namespace bounce::analysis;
 using models::EndRule;
 
 namespace {
@@ -116,11 +119,9 @@ TEST(NormalCollision, GuardsThrowTypedErrors) {
 }
 
 TEST(NormalCollision, TrajectoryIsRecordedAndConsistent) {
-  models::ModelSpec spec;
-  spec.dissipative_constant = 1e-5;
   CollideOptions o;
   o.record_trajectory = true;
-  const auto out = collide(ice_pair(), spec, 1.0, o);
+  const auto out = collide(ice_pair(), bounce::testing::viscoelastic(ice_pair(), 1e-5), 1.0, o);
   EXPECT_EQ(out.method, "integrate");
   ASSERT_GT(out.trajectory.size(), 300u);
   EXPECT_EQ(out.trajectory.front().time, 0.0);
@@ -138,17 +139,16 @@ TEST(NormalCollision, TrajectoryIsRecordedAndConsistent) {
 TEST(NormalCollision, ShiftedModelAgreesToFirstOrder) {
   const Pair& p = ice_pair();
   for (double a : {1e-9, 1e-8}) {
-    models::ModelSpec shifted, plain;
-    shifted.name = "viscoelastic-shifted";
-    shifted.dissipative_constant = plain.dissipative_constant = a;
+    const auto shifted = bounce::testing::model(p, "viscoelastic-shifted", {{"A", a}});
+    const auto plain = bounce::testing::viscoelastic(p, a);
     CollideOptions o;
     o.method = Method::integrate;
     const double e_shifted = cor(p, shifted, 1.0, o);
     const double e_plain = cor(p, plain, 1.0, o);
     const double k = analytic::kappa(a, p.hertz_constant(), p.effective_mass(), 1.0);
     EXPECT_NEAR((1.0 - e_shifted) / (1.0 - e_plain), 1.0, 0.7 * k) << a;
-    shifted.end_rule = EndRule::force;
-    EXPECT_NEAR(cor(p, shifted, 1.0, o), e_shifted, 1e-10);
+    const auto shifted_force = bounce::testing::model(p, "viscoelastic-shifted", {{"A", a}, {"contact_end", "force"}});
+    EXPECT_NEAR(cor(p, shifted_force, 1.0, o), e_shifted, 1e-10);
   }
 }
 
@@ -156,16 +156,16 @@ TEST(NormalCollision, ShiftedModelAgreesToFirstOrder) {
 // like spheres; an elongated contact has a larger C0, hence a larger kappa and smaller e.
 TEST(NormalCollision, ConvexBodiesThroughC0) {
   const Pair& p = ice_pair();
-  models::ModelSpec sphere_spec, convex_spec, elongated;
-  sphere_spec.dissipative_constant = convex_spec.dissipative_constant = elongated.dissipative_constant = 1e-6;
-  convex_spec.curvatures = convex::Curvatures{1e-2, 1e-2, 1e-2, 1e-2, 0.0};
-  elongated.curvatures = convex::Curvatures{1e-2, 5e-2, 1e-2, 5e-2, 0.0};
+  const auto sphere_spec = bounce::testing::viscoelastic(p, 1e-6);
+  const auto convex_spec = bounce::testing::model(
+      p, "viscoelastic", {{"A", 1e-6}, {"curvature_radii", std::vector{1e-2, 1e-2}}, {"curvature_radii2", std::vector{1e-2, 1e-2}}});
+  const auto elongated = bounce::testing::model(
+      p, "viscoelastic", {{"A", 1e-6}, {"curvature_radii", std::vector{1e-2, 5e-2}}, {"curvature_radii2", std::vector{1e-2, 5e-2}}});
   for (Method m : {Method::master, Method::integrate}) {
     CollideOptions o;
     o.method = m;
     EXPECT_NEAR(cor(p, convex_spec, 0.7, o), cor(p, sphere_spec, 0.7, o), 1e-12);
-    const auto geometry = models::hertz_geometry(elongated, p);
-    EXPECT_GT(geometry.force_constant, p.hertz_constant());
+    EXPECT_GT(elongated.hertz->force_constant, p.hertz_constant());
     EXPECT_LT(cor(p, elongated, 0.7, o), cor(p, sphere_spec, 0.7, o));
   }
   // The master curve applies to convex bodies too: both methods agree.

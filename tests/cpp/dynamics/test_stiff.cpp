@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "model_helpers.hpp"
+
 #include "bounce/pair/materials_table.hpp"
 #include "bounce/dynamics/adhesive_collision.hpp"
 #include "bounce/models/registry.hpp"
@@ -58,10 +60,7 @@ void expect_jacobian(const StiffSystem& system, double t, std::vector<double> y,
 
 models::KrijtParameters ice_parameters(double tvis) {
   const Pair pair = Pair::identical(MaterialTable::builtin().at("water-ice"), 2.0353e-6);
-  models::ModelSpec spec;
-  spec.name = "krijt";
-  spec.relaxation_time = tvis;
-  return models::krijt_parameters(spec, pair);
+  return bounce::testing::model(pair, "krijt", {{"tvis", tvis}}).dynamic_contact->parameters;
 }
 
 }  // namespace

@@ -10,8 +10,10 @@
 #include "bounce/analysis/collide.hpp"
 #include "bounce/dynamics/tangential.hpp"
 #include "bounce/models/registry.hpp"
+#include "model_helpers.hpp"
 
 using namespace bounce;
+using namespace bounce::analysis;
 using models::AsperityForm;
 using models::TangentialLaw;
 
@@ -29,10 +31,8 @@ const Pair& bshp96() {
   return p;
 }
 
-models::ModelSpec viscoelastic() {
-  models::ModelSpec s;
-  s.dissipative_constant = 1e-6;
-  return s;
+models::Model viscoelastic(const char* contact_end = "overlap") {
+  return bounce::testing::viscoelastic(bshp96(), 1e-6, contact_end);
 }
 
 models::TangentialModel asperity(double zeta0_over_r, AsperityForm form = AsperityForm::published) {
@@ -45,7 +45,7 @@ models::TangentialModel asperity(double zeta0_over_r, AsperityForm form = Asperi
 }
 
 dynamics::TangentialCollision oblique(double gn, double gt, const models::TangentialModel& t) {
-  const auto force = models::make_normal_force(viscoelastic(), bshp96());
+  const auto force = viscoelastic().force;
   return dynamics::integrate_tangential_collision(*force, bshp96().effective_mass(), gn, gt, t);
 }
 
@@ -179,9 +179,7 @@ TEST(Tangential, DenseBreaking) {
 // sliding (gamma_s large) gives Delta g^T = -mu (1 + eps^N) g^N / kappa; pure viscous drag
 // (mu large) gives eps^T = exp(-gamma_s t_c / kappa). Both to 1e-9 (integration error).
 TEST(Tangential, StepLawLimits) {
-  models::ModelSpec spec = viscoelastic();
-  spec.end_rule = models::EndRule::force;
-  const auto force = models::make_normal_force(spec, bshp96());
+  const auto force = viscoelastic("force").force;
   dynamics::NormalCollisionOptions o;
   o.end_rule = models::EndRule::force;
   models::TangentialModel step;
@@ -203,7 +201,7 @@ TEST(Tangential, StepLawLimits) {
 // theirs) agrees with the coupled integration to the interpolation error of F^N (2e-6
 // measured, where the breaks make it most sensitive).
 TEST(Tangential, DrivenByRecordedForceAgreesWithCoupled) {
-  const auto force = models::make_normal_force(viscoelastic(), bshp96());
+  const auto force = viscoelastic().force;
   dynamics::NormalCollisionOptions o;
   o.record_trajectory = true;
   o.trajectory_points = 4000;
@@ -224,7 +222,7 @@ TEST(Tangential, DrivenByRecordedForceAgreesWithCoupled) {
 // moved with the tolerance (by 1.8e-4 relative between 1e-8 and 1e-12; with it 1e-8).
 TEST(Tangential, BreakThresholdIndependentOfTolerance) {
   const auto t = asperity(2e-4);
-  const auto force = models::make_normal_force(viscoelastic(), bshp96());
+  const auto force = viscoelastic().force;
   auto threshold = [&](double tol) {
     dynamics::NormalCollisionOptions o;
     o.integration.relative_tolerance = tol;

@@ -1,0 +1,209 @@
+// The subcommands: each hands the options to the front door and prints what it returns
+// (JSON, CSV or text). The physics and every check are in the library.
+#include "commands.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "bounce/core/error.hpp"
+#include "output.hpp"
+#include "text.hpp"
+
+namespace bounce::cli {
+
+namespace {
+
+std::string model_of(const api::Inputs& in) {
+  const auto it = in.find("model");
+  return it == in.end() ? "viscoelastic" : std::get<std::string>(it->second);
+}
+
+// At most one output format.
+void one_format(const Options& o, std::initializer_list<const char*> formats) {
+  const char* first = nullptr;
+  for (const char* f : formats) {
+    if (!o.given(f)) continue;
+    if (first) throw InvalidArgument(f, "given", fmt::format("one output format: --{} or --{}, not both", first, f));
+    first = f;
+  }
+}
+
+std::string read_file(const std::string& option, const std::string& path, const std::string& what) {
+  if (path == "-") return {std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+  std::ifstream file(path);
+  std::stringstream text;
+  if (file) text << file.rdbuf();
+  if (!file || file.bad()) throw InvalidArgument(option, path, what);
+  return text.str();
+}
+
+using Setup = std::function<std::function<int()>(Options&)>;
+
+std::function<int()> materials(Options& o) {
+  const bool* json = o.add_flag("json", "print JSON");
+  return [&o, json] {
+    const Value m = api::materials(o.inputs());
+    *json ? print_json(m) : print_text(materials_text(m));
+    return 0;
+  };
+}
+
+std::function<int()> models(Options& o) {
+  const bool* json = o.add_flag("json", "print JSON");
+  const bool* markdown = o.add_flag("markdown", "print the Markdown tables of docs/models.md");
+  return [&o, json, markdown] {
+    one_format(o, {"json", "markdown"});
+    const Value registry = api::models();
+    if (*json) {
+      print_json(registry);
+    } else {
+      print_text(*markdown ? models_markdown(registry) : models_text(registry));
+    }
+    return 0;
+  };
+}
+
+std::function<int()> contact(Options& o) {
+  const bool* json = o.add_flag("json", "print JSON");
+  const bool* csv = o.add_flag("csv", "print a CSV curve (needs one range: --forces, --overlaps or --contact-radii)");
+  return [&o, json, csv] {
+    one_format(o, {"json", "csv"});
+    const api::Inputs in = o.inputs();
+    const bool range = in.count("forces") || in.count("overlaps") || in.count("contact_radii");
+    if (*csv != range) {
+      throw InvalidArgument("csv", *csv ? "given" : "(not given)",
+                            "--csv together with one range --forces/--overlaps/--contact-radii LO:HI:N");
+    }
+    if (*csv) {
+      print_csv(api::contact_curve(in));
+      return 0;
+    }
+    const Record out = api::contact(in);
+    *json ? print_json(out) : print_text(contact_text(out));
+    return 0;
+  };
+}
+
+std::function<int()> collide(Options& o) {
+  const bool* json = o.add_flag("json", "print JSON");
+  const bool* csv = o.add_flag("csv", "with --trajectory: print the trajectory as CSV");
+  return [&o, json, csv] {
+    one_format(o, {"json", "csv"});
+    const api::Inputs in = o.inputs();
+    if (*csv && !in.count("trajectory")) throw InvalidArgument("csv", "given", "--trajectory with --csv (the trajectory as CSV)");
+    const Record out = api::collide(in);
+    if (*csv) {
+      print_csv(out.at("trajectory").table());
+    } else {
+      *json ? print_json(out) : print_text(collide_text(out));
+    }
+    return 0;
+  };
+}
+
+std::function<int()> curve(Options& o) {
+  const bool* json = o.add_flag("json", "print JSON");
+  o.add_flag("csv", "print CSV (the default)");
+  const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
+  return [&o, json, progress] {
+    one_format(o, {"json", "csv"});
+    Progress report("bounce curve", *progress);
+    const Record out = api::curve(o.inputs(), std::ref(report));
+    *json ? print_json(out) : print_csv(api::curve_table(out));
+    return 0;
+  };
+}
+
+std::function<int()> analytic(Options& o) {
+  const bool* json = o.add_flag("json", "print JSON");
+  return [&o, json] {
+    const Record out = api::analytic(o.inputs());
+    *json ? print_json(out) : print_text(analytic_text(out));
+    return 0;
+  };
+}
+
+std::function<int()> sticking(Options& o) {
+  const bool* json = o.add_flag("json", "print JSON");
+  const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
+  return [&o, json, progress] {
+    const api::Inputs in = o.inputs();
+    if (!in.count("radii")) {
+      const Record out = api::sticking(in);
+      *json ? print_json(out) : print_text(sticking_text(out, model_of(in)));
+      return 0;
+    }
+    Progress report("bounce sticking", *progress);
+    const Value rows = api::sticking_over_radii(in, std::ref(report));
+    *json ? print_json(rows) : print_csv(api::sticking_table(rows));
+    return 0;
+  };
+}
+
+std::function<int()> rules(Options& o) {
+  const std::string* input = o.add_text("input", "JSON file of encounters (default -: standard input)");
+  return [&o, input] {
+    const std::string path = o.given("input") ? *input : "-";
+    const std::string text = read_file("input", path, "a readable JSON file (or - for standard input)");
+    try {
+      print_json(api::rules(o.inputs(), text));
+    } catch (const InvalidArgument& e) {
+      if (e.parameter() != "encounters") throw;
+      throw InvalidArgument("input", path == "-" ? "(standard input)" : path, e.allowed());
+    }
+    return 0;
+  };
+}
+
+int write_table(const Options& o, const std::string& prefix, const auto& table) {
+  if (o.given("json")) print_text(table.to_json() + '\n');
+  if (o.given("csv")) print_text(table.to_csv());
+  if (o.given("c_header")) print_text(table.to_c_header(prefix));
+  return 0;
+}
+
+std::function<int()> table(Options& o) {
+  o.add_flag("json", "write the table as JSON (read back by --load)");
+  o.add_flag("csv", "write the table's nodes as CSV");
+  const std::string* prefix = o.add_text("c_header", "write a self-contained C99 header; PREFIX names its symbols");
+  const std::string* load = o.add_text("load", "read a JSON table and print its value at --velocity");
+  const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
+  return [&o, prefix, load, progress] {
+    if (o.given("load")) {
+      const std::string text = read_file("load", *load, "a readable JSON file written by bounce table --json");
+      const Record out = api::table_value(text, o.inputs());
+      o.given("json") ? print_json(out) : print_text(table_value_text(out));
+      return 0;
+    }
+    const int formats = int(o.given("json")) + int(o.given("csv")) + int(o.given("c_header"));
+    if (formats != 1) {
+      throw InvalidArgument("format", fmt::format("{} given", formats), "exactly one of --json, --csv, --c-header PREFIX");
+    }
+    Progress report("bounce table", *progress);
+    const auto t = api::table(o.inputs(), std::ref(report));
+    return std::visit([&](const auto& built) { return write_table(o, *prefix, built); }, t);
+  };
+}
+
+const std::map<std::string, Setup>& setups() {
+  static const std::map<std::string, Setup> table = {
+      {"materials", materials}, {"models", models},     {"contact", contact},   {"collide", collide}, {"curve", curve},
+      {"analytic", analytic},   {"sticking", sticking}, {"rules", rules},       {"table", ::bounce::cli::table}};
+  return table;
+}
+
+}  // namespace
+
+Command add_command(CLI::App& root, const api::CommandSpec& spec) {
+  Command c;
+  c.app = root.add_subcommand(spec.name, spec.summary);
+  c.options = std::make_unique<Options>(c.app, spec);
+  c.run = setups().at(spec.name)(*c.options);
+  return c;
+}
+
+}  // namespace bounce::cli

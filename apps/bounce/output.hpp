@@ -1,0 +1,46 @@
+#pragma once
+// The CLI's output: Records as JSON, Tables as CSV (never a NaN or an infinity: a
+// non-finite number is a NumericalError), progress on stderr, and the error policy.
+
+#include <cstddef>
+#include <functional>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "bounce/core/record.hpp"
+
+namespace bounce::cli {
+
+/// A Value as JSON (a Table as a list of objects).
+nlohmann::json to_json(const Value& value);
+/// Print a Value as JSON (2-space indent, keys sorted).
+void print_json(const Value& value);
+/// Print a Table as CSV: a header line, then one row per line; numbers in their shortest
+/// round-trip form, text quoted when it holds a space, a comma or a quote, null empty.
+void print_csv(const Table& table);
+/// Write text to stdout as it is.
+void print_text(const std::string& text);
+
+/// Progress on stderr for long runs: shown when stderr is a terminal or `forced`, at most
+/// once a second.
+class Progress {
+ public:
+  Progress(std::string what, bool forced);
+  void operator()(std::size_t done, std::size_t total);
+
+ private:
+  std::string what_;
+  bool enabled_;
+  double start_;
+  double last_ = -1.0;
+};
+
+/// Runs a command under the error policy: InvalidArgument -> one line on stderr naming the
+/// option (a parameter in `options` as --name), exit 2; NumericalError -> one line, exit 3;
+/// anything else -> exit 4. A failed write to stdout is an error too (exit 3): the results
+/// did not arrive.
+int run_guarded(const std::function<int()>& body, const std::set<std::string>& options);
+
+}  // namespace bounce::cli

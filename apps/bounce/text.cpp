@@ -1,0 +1,276 @@
+// The CLI's text output: the front door's Records in words, for a person at a terminal.
+#include "text.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace bounce::cli {
+
+namespace {
+
+double num(const Record& r, std::string_view key) { return r.at(key).number(); }
+const std::string& str(const Record& r, std::string_view key) { return r.at(key).text(); }
+
+// The fields of a record sorted by key (as the JSON prints them).
+std::vector<std::pair<std::string, Value>> sorted(const Record& r) {
+  auto fields = r.fields();
+  std::sort(fields.begin(), fields.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return fields;
+}
+
+std::string lines(const char* prefix, const Value& list) {
+  std::string s;
+  for (const Value& v : list.list()) s += fmt::format("{}: {}\n", prefix, v.text());
+  return s;
+}
+
+std::string tangential_line(const Record& t) {
+  return fmt::format(
+      "tangential   e^T = {:.12g} ({} asperity breaks resolved, {:.3g} s averaged; energy [J]: initial {:.6g}, "
+      "final {:.6g}, asperities {:.6g}, left {:.6g}, from the stiffness change {:.6g})\n",
+      num(t, "cor"), std::get<std::int64_t>(t.at("breaks").data()), num(t, "averaged_time"), num(t, "initial_kinetic"),
+      num(t, "final_kinetic"), num(t, "asperity_dissipated"), num(t, "stored_at_end"), num(t, "stiffness_work"));
+}
+
+std::string merged_line(const Record& m) {
+  if (m.at("mass").is_null() || std::holds_alternative<std::string>(m.at("mass").data())) {
+    return "merged           = the grain stays on the wall\n";
+  }
+  return fmt::format("merged           = {:.6g} kg at {:.6g} m/s (frame of body 2 before the impact)\n", num(m, "mass"),
+                     num(m, "velocity"));
+}
+
+}  // namespace
+
+std::string collide_text(const Record& out) {
+  std::string s = fmt::format("model {} (contact end: {}, method: {}) at {:.6g} m/s\n", str(out, "model"),
+                              str(out, "contact_end"), str(out, "method"), num(out, "velocity"));
+  if (out.contains("kappa")) {
+    s += fmt::format("kappa = {:.6g} (BP04 (8.70))", num(out, "kappa"));
+    if (out.contains("characteristic_velocity")) s += fmt::format(", g* = {:.6g} m/s", num(out, "characteristic_velocity"));
+    s += "\n";
+  }
+  const bool stuck = str(out, "outcome") == "stick";
+  s += fmt::format("cor          e   = {:.12g}\noutcome          = {}\n", num(out, "cor"), str(out, "outcome"));
+  if (out.contains("tangential")) s += tangential_line(out.at("tangential").record());
+  s += fmt::format("contact time t_c = {:.6g} s{}\nmax overlap      = {:.6g} m\n", num(out, "contact_time"),
+                   stuck ? " (when sticking became certain)" : "", num(out, "max_overlap"));
+  if (out.contains("merged")) s += merged_line(out.at("merged").record());
+  const Record& e = out.at("energy").record();
+  s += fmt::format(
+      "energy [J]: initial {:.6g}, final {:.6g}, bulk dissipated {:.6g}, crack dissipated {:.6g}, plastic {:.6g}, "
+      "left elastic {:.6g}, left surface {:.6g}\n",
+      num(e, "initial_kinetic"), num(e, "final_kinetic"), num(e, "bulk_dissipated"), num(e, "crack_dissipated"),
+      num(e, "plastic_dissipated"), num(e, "elastic_remaining"), num(e, "surface_remaining"));
+  if (out.contains("closed_forms")) {
+    for (const auto& [key, value] : sorted(out.at("closed_forms").record())) {
+      s += fmt::format("  {:<28} {:.6g}\n", key, value.number());
+    }
+  }
+  return s + lines("note", out.at("notes")) + lines("warning", out.at("warnings"));
+}
+
+std::string contact_text(const Record& out) {
+  const Record& pair = out.at("pair").record();
+  std::string s = fmt::format("law: {}\n", str(out, "law"));
+  s += fmt::format("pair: R_eff = {:.6g} m, m_eff = {:.6g} kg, E* = {:.6g} Pa", num(pair, "effective_radius"),
+                   num(pair, "effective_mass"), num(pair, "effective_modulus"));
+  if (!pair.at("surface_energy").is_null()) s += fmt::format(", gamma = {:.6g} J/m^2", num(pair, "surface_energy"));
+  s += "\n";
+  s += fmt::format("contact radius a     = {:.6g} m\n", num(out, "contact_radius"));
+  s += fmt::format("overlap        delta = {:.6g} m\n", num(out, "overlap"));
+  s += fmt::format("force          F     = {:.6g} N\n", num(out, "force"));
+  if (out.contains("ellipse")) {
+    const Record& e = out.at("ellipse").record();
+    s += fmt::format("contact ellipse: a = {:.6g} m, b = {:.6g} m (x0 = a^2/b^2 = {:.6g}), C0 = {:.6g} N/m^1.5\n",
+                     num(e, "semi_axis_a"), num(e, "semi_axis_b"), num(e, "x0"), num(e, "force_constant"));
+  }
+  if (out.contains("pull_off_force")) {
+    s += fmt::format("pull-off force (force control)  = {:.6g} N at a = {:.6g} m\n", num(out, "pull_off_force"),
+                     num(out, "pull_off_contact_radius"));
+    s += fmt::format("zero load                       : a = {:.6g} m, delta = {:.6g} m\n",
+                     num(out, "zero_load_contact_radius"), num(out, "zero_load_overlap"));
+    s += fmt::format("separation (overlap control)    : delta = {:.6g} m at a = {:.6g} m\n",
+                     num(out, "separation_overlap"), num(out, "separation_contact_radius"));
+  }
+  if (out.contains("tabor_parameter")) {
+    s += fmt::format(
+        "Tabor parameter mu = {:.4g} (K13 (11): {}), BP04 (8.55) mu = {:.4g} ({}), Maugis lambda = {:.4g}, z0 = {:g} "
+        "m\n",
+        num(out, "tabor_parameter"), str(out, "regime_k13"), num(out, "tabor_parameter_bp04"), str(out, "regime_bp04"),
+        num(out, "maugis_lambda"), num(out, "z0"));
+  }
+  return s + lines("warning", out.at("warnings"));
+}
+
+namespace {
+
+std::string value_line(const std::string& what, double value) { return fmt::format("  {:<44} {:.10f}\n", what, value); }
+
+std::string coefficients_line(const std::string& what, const Record& series) {
+  std::string s = fmt::format("  {:<14}", what);
+  const auto& a = series.at("a").list();
+  const auto& u = series.at("uncertainty").list();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    s += fmt::format(" a{}={:.6g}", i + 1, a[i].number());
+    if (u[i].number() > 0) s += fmt::format("(+-{:.1g})", u[i].number());
+  }
+  return s + "\n";
+}
+
+}  // namespace
+
+std::string analytic_text(const Record& out) {
+  std::string s = fmt::format("kappa = {:.6g} (BP04 (8.70)), q = (g/g*)^(1/5) = 2 b kappa = {:.6g}, g* = {:.6g} m/s\n",
+                              num(out, "kappa"), num(out, "q"), num(out, "characteristic_velocity"));
+  const Record& exact = out.at("exact").record();
+  const Record& series = out.at("series_8_89").record();
+  const Record& pade = out.at("pade_8_92").record();
+  s += "coefficient of restitution:\n";
+  s += value_line("exact, overlap end rule (master curve)", num(exact, "overlap"));
+  s += value_line("exact, force end rule (master curve)", num(exact, "force"));
+  s += value_line("implicit equation BP04 (8.85)", num(out, "implicit_8_85"));
+  s += value_line("continued fraction BP04 (8.86)", num(out, "continued_fraction_8_86"));
+  s += value_line("series (8.89), BP04 simple a_k", num(series, "bp04_simple"));
+  s += value_line("series (8.89), BP04 a3 = 0.315, a4 = 0.161", num(series, "bp04_rigorous"));
+  s += value_line("series (8.89), bounce a_k (overlap rule)", num(series, "bounce_overlap"));
+  s += value_line("series, bounce, force rule (+ kappa^5/2 terms)", num(series, "bounce_force"));
+  s += value_line("Pade (8.92), BP04's printed d_k", num(pade, "bp04_printed"));
+  s += value_line("Pade (8.92)-(8.93) from BP04's a_k", num(pade, "from_bp04_a_k"));
+  s += value_line("Pade (8.92)-(8.93) from bounce's a_k", num(pade, "from_bounce_a_k"));
+  s += "series coefficients a_k (e = 1 - a1 q + a2 q^2 - a3 q^3 + ...):\n";
+  const Record& coefficients = out.at("coefficients").record();
+  s += coefficients_line("BP04 simple", coefficients.at("bp04_simple").record());
+  s += coefficients_line("BP04 rigorous", coefficients.at("bp04_rigorous").record());
+  s += coefficients_line("bounce", coefficients.at("bounce_overlap").record());
+  s += "contact time [s]:\n";
+  for (const auto& [key, value] : sorted(out.at("contact_time").record())) s += value_line(key, value.number());
+  return s;
+}
+
+std::string sticking_text(const Record& j, const std::string& model) {
+  const auto& bracket = j.at("bracket").list();
+  std::string s = fmt::format("sticking velocity {:.8g} m/s (model {}, bracket [{:.8g}, {:.8g}], {} collisions)\n",
+                              num(j, "sticking_velocity"), model, bracket[0].number(), bracket[1].number(),
+                              std::get<std::int64_t>(j.at("collisions").data()));
+  s += fmt::format("elastic JKR (exact)  {:.8g} m/s\nK13 (25)             {:.8g} m/s\n", num(j, "sticking_velocity_jkr"),
+                   num(j, "sticking_velocity_k13_25"));
+  if (j.contains("sticking_velocity_bp04_8_100")) {
+    s += fmt::format("BP04 (8.100)         {:.8g} m/s\nBP04 (8.101)         {:.8g} m/s\n",
+                     num(j, "sticking_velocity_bp04_8_100"), num(j, "sticking_velocity_bp04_8_101"));
+  }
+  return s;
+}
+
+std::string materials_text(const Value& materials) {
+  std::string s = fmt::format("{:<16} {:>10} {:>6} {:>8} {:>11}  {}\n", "name", "E [GPa]", "nu", "rho", "gamma", "source");
+  s += fmt::format("{:<16} {:>10} {:>6} {:>8} {:>11}\n", "", "", "", "[kg/m^3]", "[J/m^2]");
+  for (const Value& v : materials.list()) {
+    const Record& m = v.record();
+    std::string gamma = "-";
+    if (!m.at("surface_energy").is_null()) gamma = fmt::format("{:g}", num(m, "surface_energy"));
+    if (m.contains("surface_energy_range")) {
+      const auto& range = m.at("surface_energy_range").list();
+      gamma = fmt::format("{:g}-{:g}", range[0].number(), range[1].number());
+    }
+    s += fmt::format("{:<16} {:>10g} {:>6g} {:>8g} {:>11}  {}\n", str(m, "name"), num(m, "youngs_modulus") / 1e9,
+                     num(m, "poisson_ratio"), num(m, "density"), gamma, str(m, "source"));
+  }
+  return s;
+}
+
+std::string table_value_text(const Record& r) {
+  if (r.contains("cor_tangential")) {
+    return fmt::format("cor_tangential {:.10g} ({} asperity breaks), table error <= {:g}\n", num(r, "cor_tangential"),
+                       std::get<std::int64_t>(r.at("breaks").data()), num(r, "bound"));
+  }
+  return fmt::format("cor {:.10g} ({}), table error <= {:g}\n", num(r, "cor"), str(r, "outcome"), num(r, "bound"));
+}
+
+}  // namespace bounce::cli
+
+// --- the registries -------------------------------------------------------------------
+
+namespace bounce::cli {
+
+namespace {
+
+std::string capabilities_text(const Record& c) {
+  std::vector<std::string> on;
+  for (const auto& [key, value] : c.fields()) {
+    if (std::get<bool>(value.data())) on.push_back(key);
+  }
+  std::string s;
+  for (std::size_t i = 0; i < on.size(); ++i) s += (i ? ", " : "") + on[i];
+  return s.empty() ? "-" : s;
+}
+
+// One parameter as a Markdown table row: name, unit, allowed, default, what it is.
+std::string parameter_row(const Record& p) {
+  const std::string unit = str(p, "unit").empty() ? "-" : str(p, "unit");
+  std::string allowed = "-";
+  if (p.contains("allowed")) allowed = str(p, "allowed");
+  if (p.contains("choices")) {
+    allowed.clear();
+    for (const Value& c : p.at("choices").list()) allowed += (allowed.empty() ? "" : " \\| ") + c.text();
+  }
+  const std::string fallback = p.at("default").is_null() ? "-" : str(p, "default");
+  return fmt::format("| `{}` | {} | {} | {} | {} |\n", str(p, "name"), unit, allowed, fallback, str(p, "help"));
+}
+
+std::string parameters_markdown(const Value& parameters) {
+  std::string s = "| parameter | unit | allowed | default | meaning |\n|---|---|---|---|---|\n";
+  for (const Value& p : parameters.list()) s += parameter_row(p.record());
+  return s;
+}
+
+}  // namespace
+
+std::string models_markdown(const Value& registry) {
+  const Record& r = registry.record();
+  std::string s = "| model | what | references | capabilities |\n|---|---|---|---|\n";
+  for (const Value& m : r.at("models").list()) {
+    const Record& row = m.record();
+    s += fmt::format("| `{}` | {} | {} | {} |\n", str(row, "name"), str(row, "summary"), str(row, "references"),
+                     capabilities_text(row.at("capabilities").record()));
+  }
+  for (const Value& m : r.at("models").list()) {
+    const Record& row = m.record();
+    s += fmt::format("\n### `{}`\n\n{} ({}).\n\n", str(row, "name"), str(row, "summary"), str(row, "references"));
+    s += parameters_markdown(row.at("parameters"));
+  }
+  s += "\n## Contact laws (`bounce contact --law`)\n\n| law | what | references | needs gamma |\n|---|---|---|---|\n";
+  for (const Value& l : r.at("laws").list()) {
+    const Record& row = l.record();
+    s += fmt::format("| `{}` | {} | {} | {} |\n", str(row, "name"), str(row, "summary"), str(row, "references"),
+                     std::get<bool>(row.at("needs_surface_energy").data()) ? "yes" : "no");
+  }
+  for (const Value& l : r.at("laws").list()) {
+    const Record& row = l.record();
+    if (row.at("parameters").list().empty()) continue;
+    s += fmt::format("\n### law `{}`\n\n", str(row, "name")) + parameters_markdown(row.at("parameters"));
+  }
+  return s;
+}
+
+std::string models_text(const Value& registry) {
+  std::string s;
+  for (const Value& m : registry.record().at("models").list()) {
+    const Record& row = m.record();
+    s += fmt::format("{:<22} {}\n{:<22} {}; {}\n", str(row, "name"), str(row, "summary"), "", str(row, "references"),
+                     capabilities_text(row.at("capabilities").record()));
+    std::vector<std::string> names;
+    for (const Value& p : row.at("parameters").list()) names.push_back(p.record().at("name").text());
+    std::string line;
+    for (const auto& n : names) line += (line.empty() ? "" : " ") + std::string("--") + n;
+    for (char& c : line) c = c == '_' ? '-' : c;
+    s += fmt::format("{:<22} {}\n", "", line);
+  }
+  s += "contact laws:";
+  for (const Value& l : registry.record().at("laws").list()) s += " " + l.record().at("name").text();
+  return s + "\n";
+}
+
+}  // namespace bounce::cli

@@ -1,0 +1,105 @@
+#pragma once
+// The front door: "a pair + a model + what to compute", for every front end (the CLI, the
+// Python package, and next the fitter and the LAMMPS plugin).
+//
+// A front end hands over what the user typed, by parameter name (core/parameters.hpp): the
+// pair's (pair/pair_parameters.hpp), the model's (models/registry.hpp, with "model" naming
+// it), and the command's own (velocity, velocities, ...). The front door checks every input
+// once against its declaration, refuses one that the command or the model does not use
+// (InvalidArgument naming it), builds the pair and the model, runs the library and returns a
+// Record whose keys are those of the CLI's JSON and of Python's dicts.
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "bounce/analysis/collide.hpp"
+#include "bounce/analysis/tables.hpp"
+#include "bounce/core/parameters.hpp"
+#include "bounce/core/record.hpp"
+#include "bounce/models/model.hpp"
+#include "bounce/pair/pair.hpp"
+
+namespace bounce::api {
+
+using Inputs = ParameterInputs;
+/// Called with (done, total) as a long run goes.
+using Progress = std::function<void(std::size_t, std::size_t)>;
+
+/// A command: its name, what it does, and the parameters it takes beside the pair's and the
+/// model's.
+struct CommandSpec {
+  std::string name;
+  std::string summary;
+  bool takes_pair = false;
+  bool takes_model = false;
+  std::vector<ParameterSpec> parameters;  ///< its own
+};
+const std::vector<CommandSpec>& commands();
+/// InvalidArgument("command", name, "one of …") for an unknown command.
+const CommandSpec& command(std::string_view name);
+
+/// The spec of "model" (the keyword), "law" (the contact law).
+ParameterSpec model_parameter();
+ParameterSpec law_parameter();
+
+/// Every parameter a command can take with any model or law (its own, the pair's, the
+/// models' or laws'): what a front end offers (CLI options, --help lines).
+std::vector<ParameterSpec> offered_parameters(std::string_view command);
+/// The models (or contact laws) that take a parameter, for help lines: empty when all do.
+std::vector<std::string> models_taking(std::string_view parameter);
+
+/// A pair, a model and how to integrate it, every input checked once.
+struct Case {
+  Pair pair;
+  models::Model model;
+  analysis::CollideOptions options;
+  Parameters pair_parameters, model_parameters, own;  ///< the inputs, by group, bound
+};
+/// The case of `command` (collide, curve, sticking, analytic, rules, table). With `radius`,
+/// body 1 has that radius (sweeps over radii).
+Case make_case(std::string_view command, const Inputs& inputs, std::optional<double> radius = std::nullopt);
+/// The pair alone (the pair's parameters; anything else is refused).
+Pair make_pair(const Inputs& inputs);
+/// The model's inputs checked against its row (Python's Model(...) before it meets a pair).
+Parameters check_model(std::string_view name, const Inputs& inputs);
+
+// --- the commands: each returns the Record the CLI prints as JSON ----------------------
+Record collide(const Inputs& inputs);
+/// {points, boundaries} of a sweep over velocities (or radii at one velocity).
+Record curve(const Inputs& inputs, const Progress& progress = {});
+/// The columns of a curve (the CLI's CSV, Python's arrays), from curve()'s Record.
+Table curve_table(const Record& curve);
+/// collide() over speeds as columns (velocity, cor, outcome, contact_time, max_overlap,
+/// bulk_dissipated, crack_dissipated, and cor_tangential when oblique): Python's arrays.
+Table collide_columns(const Inputs& inputs, const std::vector<double>& velocities);
+Record sticking(const Inputs& inputs, const Progress& progress = {});
+/// With radii: a list of sticking records, one per radius (a radius without a threshold has
+/// sticking_velocity null and the reason in "note").
+Value sticking_over_radii(const Inputs& inputs, const Progress& progress = {});
+Table sticking_table(const Value& rows);
+Record contact(const Inputs& inputs);
+/// The contact law's curve over forces, overlaps or contact radii (one of them given).
+Table contact_curve(const Inputs& inputs);
+Record analytic(const Inputs& inputs);
+/// `encounters`: JSON text, one encounter object or a list of them (docs/cli.md).
+Value rules(const Inputs& inputs, std::string_view encounters);
+/// eps^N table, or eps^T with tangential_velocities.
+std::variant<analysis::NormalTable, analysis::TangentialTable> table(const Inputs& inputs, const Progress& progress = {});
+/// The value of a saved JSON table at velocity (and tangential_velocity for eps^T).
+Record table_value(std::string_view json, const Inputs& inputs);
+/// The materials table (built-in, or materials_file).
+Value materials(const Inputs& inputs);
+/// The model registry and the contact laws, with every parameter.
+Value models();
+
+/// The pair as a Record (bodies and pair quantities, SI).
+Record pair_record(const Pair& pair);
+/// A collision outcome as a Record (with the trajectory as a Table when recorded).
+Record outcome_record(const dynamics::CollisionOutcome& outcome);
+
+}  // namespace bounce::api

@@ -1,0 +1,118 @@
+#pragma once
+// Named parameters, declared once and checked in one place.
+//
+// Every input of bounce that a user types (a body property, a model constant, a numerical
+// setting, what a command computes) is declared by a ParameterSpec: its name, kind, unit,
+// allowed range and default. The name is the CLI option without its dashes, with '_' for
+// '-' ("A", "contact_end", "power_d1"); Python takes the same names as keywords and LAMMPS's
+// pair_coeff as keys. Front ends hand the library what the user typed, by name (text from a
+// command line, numbers from Python); bind_parameters() checks every value against its spec and
+// refuses a name that nothing declares, so an input is never silently ignored.
+
+#include <limits>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace bounce {
+
+/// A value as given: a number, a word (a choice, a name, a file), a list of numbers, or a flag.
+using ParameterValue = std::variant<double, std::string, std::vector<double>, bool>;
+/// What a user typed, by parameter name.
+using ParameterInputs = std::map<std::string, ParameterValue, std::less<>>;
+
+enum class ParameterKind {
+  real,    ///< one number
+  reals,   ///< `count` numbers ("R1,R2" on a command line)
+  choice,  ///< one of `choices`
+  text,    ///< free text (a material name, a file)
+  flag,    ///< on or off
+};
+
+/// The allowed values of a real parameter: lo < x < hi, with either end included on
+/// request; infinity only where `infinite` allows it (a flat direction has radius inf).
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_included = false;
+  bool hi_included = false;
+  bool infinite = false;
+
+  bool contains(double x) const;
+  /// The allowed range as a sentence fragment about `what`: "A [s] >= 0 and finite",
+  /// "0 < k < 1" (the wording of every bounce error message).
+  std::string describe(std::string_view what) const;
+};
+/// x > 0 (finite), x >= 0 (finite), lo < x < hi.
+Range positive();
+Range non_negative();
+Range open_interval(double lo, double hi);
+
+struct ParameterSpec {
+  std::string name;      ///< "A", "contact_end", "power_d1" (the CLI option without dashes)
+  ParameterKind kind = ParameterKind::real;
+  std::string quantity;  ///< what it is, with its symbol: "dissipative constant A"
+  std::string unit;      ///< SI unit ("s", "m", "Pa s"); empty when dimensionless
+  std::string help;      ///< one line for --help, docstrings and docs (with its references)
+  Range range;           ///< real and reals
+  std::vector<std::string> choices;  ///< choice
+  std::size_t count = 1;             ///< reals: how many numbers
+  std::optional<ParameterValue> default_value;  ///< used when not given; none: optional or required
+
+  /// "dissipative constant A [s]": the quantity and its unit, for messages.
+  std::string what() const;
+  /// The default as the user would type it ("0.02", "overlap"), or "" without one.
+  std::string default_text() const;
+};
+
+/// Text of a value as the user would type it ("1e-06", "force", "0.001,0.005", "true").
+std::string value_text(const ParameterValue& value);
+
+/// Values checked against their specs (made by bind_parameters()).
+class Parameters {
+ public:
+  Parameters() = default;
+
+  /// True when the user gave a value (a default does not count).
+  bool given(std::string_view name) const;
+  /// The number given, else the default, else none.
+  std::optional<double> real(std::string_view name) const;
+  /// The number given or its default; InvalidArgument(name, "(not given)", why) without both.
+  double require_real(std::string_view name, std::string_view why) const;
+  /// The numbers given (reals), else none.
+  std::optional<std::vector<double>> reals(std::string_view name) const;
+  /// The choice or text given, else the default, else "".
+  std::string text(std::string_view name) const;
+  /// The flag (false unless given as true).
+  bool flag(std::string_view name) const;
+
+  /// Every value given, validated and converted (text read as numbers where declared so).
+  const ParameterInputs& values() const noexcept { return values_; }
+  /// The specs these values were checked against.
+  const std::vector<ParameterSpec>& specs() const noexcept { return specs_; }
+  const ParameterSpec* spec(std::string_view name) const;
+
+ private:
+  friend Parameters bind_parameters(std::span<const ParameterSpec>, const ParameterInputs&, std::string_view);
+  std::vector<ParameterSpec> specs_;
+  ParameterInputs values_;
+};
+
+/// Checks every input against the spec of its name: its kind (text is read as a number,
+/// "R1,R2" as numbers, "inf" where allowed), its range or choices. A name without a spec
+/// is an InvalidArgument naming it and listing what `owner` ("model viscoelastic",
+/// "command contact") takes.
+Parameters bind_parameters(std::span<const ParameterSpec> specs, const ParameterInputs& inputs, std::string_view owner);
+
+/// A real number from text, InvalidArgument(name, text, "a number") otherwise (std::from_chars:
+/// the whole text, no spaces; "inf" only with `infinite`).
+double parse_real(std::string_view name, std::string_view text, bool infinite = false);
+
+/// Specs by name across several lists (the first of each name), for listings and help.
+std::vector<ParameterSpec> merge_specs(std::initializer_list<std::span<const ParameterSpec>> lists);
+
+}  // namespace bounce

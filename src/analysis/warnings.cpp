@@ -1,0 +1,116 @@
+#include "warnings.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "bounce/analytic/adhesive.hpp"
+#include "bounce/contact/jkr.hpp"
+#include "bounce/contact/surface_forces.hpp"
+
+namespace bounce::analysis::detail {
+
+namespace {
+
+using dynamics::CollisionOutcome;
+
+// Quasi-static validity (BSHP96 (B11)-(B12), BP04 (8.26)) and small strain.
+void add_validity_warnings(CollisionOutcome& out, const Pair& pair, double velocity, double viscous_time) {
+  const double c_t = pair.transversal_sound_speed();
+  if (velocity > 0.1 * c_t) {
+    out.warnings.push_back(fmt::format(
+        "impact velocity {:.3g} m/s is not << the transversal sound speed {:.3g} m/s: the "
+        "quasi-static approximation (BSHP96 (B11)) does not hold",
+        velocity, c_t));
+  }
+  if (viscous_time > 0.1 * out.contact_time && out.contact_time > 0.0) {
+    out.warnings.push_back(fmt::format(
+        "viscous time scale {:.3g} s is not << the contact time {:.3g} s (BSHP96 (B12), BP04 (8.26))",
+        viscous_time, out.contact_time));
+  }
+  const double strain = std::sqrt(out.max_overlap / pair.effective_radius());
+  if (strain > 0.1) {
+    out.warnings.push_back(fmt::format(
+        "contact radius / R_eff = {:.3g} is not small: Hertz theory assumes small strains", strain));
+  }
+}
+
+// K13 appendix A: where bulk and crack viscosity become negligible (the elastic JKR
+// estimates do not apply otherwise); for K13's crack law.
+void add_k13_appendix_a_warnings(CollisionOutcome& out, const Pair& pair, const models::KrijtParameters& p) {
+  const double nu = std::sqrt(p.relaxation_time / p.dissipative_constant);
+  const double bulk = analytic::bulk_quasi_static_limit(nu, out.contact_time);
+  if (p.relaxation_time >= bulk) {
+    out.warnings.push_back(fmt::format(
+        "K13 (A.2) does not hold: T_vis = {:.3g} s >= 1e-2 nu^2 t_c = {:.3g} s, bulk viscous dissipation is "
+        "significant (the elastic JKR estimate (24) does not apply)", p.relaxation_time, bulk));
+  }
+  const double gamma = p.surface_energy;
+  const double a = out.max_overlap > 0.0
+                       ? std::sqrt(pair.effective_radius() * out.max_overlap)
+                       : contact::jkr::equilibrium_contact_radius({pair.effective_radius(), pair.effective_modulus(), gamma});
+  const double crack = analytic::crack_quasi_static_limit(p.z0, a, p.effective_modulus, gamma, out.contact_time);
+  if (p.relaxation_time >= crack) {
+    out.warnings.push_back(fmt::format(
+        "K13 (A.4) does not hold: T_vis = {:.3g} s >= {:.3g} s, adhesion hysteresis at the crack is "
+        "significant (the elastic JKR estimate (24) does not apply)", p.relaxation_time, crack));
+  }
+}
+
+// K13 §2.1.2: the JKR-based adhesive models assume the Tabor parameter mu > 5.
+void add_adhesive_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model) {
+  const double gamma = *pair.surface_energy();
+  const double mu = contact::surface::tabor_parameter(pair.effective_radius(), pair.effective_modulus(), gamma, model.z0);
+  if (mu < 5.0) {
+    out.warnings.push_back(fmt::format(
+        "Tabor parameter mu = {:.3g} < 5 (K13 (11), z0 = {:g} m): the JKR-based adhesive model may not apply "
+        "(DMT below 0.1, Maugis-Dugdale between)", mu, model.z0));
+  }
+  const auto& contact = model.dynamic_contact;
+  if (contact && !contact->instantaneous_crack && out.contact_time > 0.0) {
+    add_k13_appendix_a_warnings(out, pair, contact->parameters);
+  }
+}
+
+// BP04 (8.99): a viscoelastic description ignores adhesion only while e g >> sqrt(2 W0/m),
+// W0 the work of the JKR tensile force (8.95); BP04's own estimate (adhesive-
+// viscoelastic) assumes the same weak adhesion. ">>" is taken as a factor 3 (9 in energy).
+void add_adhesion_validity_warning(CollisionOutcome& out, const Pair& pair, double velocity, bool weak) {
+  const auto gamma = pair.surface_energy();
+  if (!gamma || *gamma <= 0.0) return;
+  const double w0 = analytic::tensile_work(pair.effective_radius(), pair.effective_modulus(), *gamma);
+  const double escape = std::sqrt(2.0 * w0 / pair.effective_mass());
+  const double e = weak && out.outcome == dynamics::Outcome::bounce
+                       ? std::sqrt(out.cor * out.cor + escape * escape / (velocity * velocity))  // e before adhesion
+                       : out.cor;
+  if (e * velocity >= 3.0 * escape) return;
+  out.warnings.push_back(fmt::format(
+      "BP04 (8.99) does not hold: e g = {:.3g} m/s is not >> sqrt(2 W0/m) = {:.3g} m/s (gamma = {:g} J/m^2): {}",
+      e * velocity, escape, *gamma,
+      weak ? "adhesion is not weak, BP04's estimate is rough (see krijt)"
+           : "adhesion is not negligible, use an adhesive model"));
+}
+
+// BSHP96 states -1 <= eps^T <= 1; the published asperity law can leave that range by
+// the energy its spring gains from the changing stiffness (docs/tangential.md).
+void add_tangential_warnings(CollisionOutcome& out) {
+  if (!out.tangential || std::abs(out.tangential->cor) <= 1.0) return;
+  out.warnings.push_back(fmt::format(
+      "|eps^T| = {:.4g} > 1: the published asperity law's spring gained {:.3g} J from its changing stiffness "
+      "(BSHP96's bound -1 <= eps^T <= 1 fails; --asperity-form passive cannot gain energy)",
+      std::abs(out.tangential->cor), out.tangential->stiffness_work));
+}
+
+}  // namespace
+
+void add_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model, double velocity) {
+  add_validity_warnings(out, pair, velocity, model.viscous_time);
+  if (model.capabilities.adhesive) add_adhesive_warnings(out, pair, model);
+  if (model.adhesion == models::Adhesion::negligible || model.adhesion == models::Adhesion::weak) {
+    add_adhesion_validity_warning(out, pair, velocity, model.adhesion == models::Adhesion::weak);
+  }
+  add_tangential_warnings(out);
+}
+
+}  // namespace bounce::analysis::detail

@@ -1,0 +1,41 @@
+#pragma once
+// Private: how the front door splits and checks what a user typed (commands.cpp).
+
+#include <array>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bounce/api/front_door.hpp"
+
+namespace bounce::api::detail {
+
+/// The inputs of one command, split into their groups and bound to their specs.
+struct Bound {
+  std::string model;  ///< the model's keyword (commands that take a model) or the law's (contact)
+  Parameters pair, model_parameters, own;
+};
+
+/// Splits `inputs` among the command's own parameters, the pair's and the model's (or the
+/// contact law's), and binds each group. A name none of them takes is refused with a message
+/// that says which models, laws or commands do take it.
+Bound bind_inputs(const CommandSpec& command, const Inputs& inputs);
+
+/// The case from bound inputs (make_case after bind_inputs; the command's own inputs can be
+/// checked in between, before the pair and the model are built).
+Case make_case(const Bound& bound, std::optional<double> radius = std::nullopt);
+
+/// Refuses the first of `names` that was given: the command does not use it (`why`).
+void refuse_given(const Parameters& p, std::span<const char* const> names, std::string_view why);
+
+/// "LO:HI:N" as N values (geometric with `log`); errors name `name`.
+std::vector<double> parse_range(const std::string& name, const std::string& text, bool log);
+/// "LO:HI" with 0 < LO < HI; errors name `name`.
+std::array<double, 2> parse_interval(const std::string& name, const std::string& text);
+
+/// The tangential law's parameters (they need a tangential velocity).
+inline constexpr std::array<const char*, 5> tangential_names = {"friction", "asperity", "shear_damping",
+                                                                "tangential_law", "asperity_form"};
+
+}  // namespace bounce::api::detail

@@ -1,0 +1,336 @@
+// The commands of the front door, their own parameters, and how inputs are split and checked.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <regex>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "binding.hpp"
+#include "bounce/contact/law.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+#include "bounce/models/registry.hpp"
+#include "bounce/pair/pair_parameters.hpp"
+
+namespace bounce::api {
+
+namespace {
+
+ParameterSpec own(std::string name, ParameterKind kind, std::string quantity, std::string unit, std::string help,
+                  Range range = {}) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.kind = kind;
+  s.quantity = std::move(quantity);
+  s.unit = std::move(unit);
+  s.help = std::move(help);
+  s.range = range;
+  return s;
+}
+
+ParameterSpec flag(std::string name, std::string help) {
+  return own(std::move(name), ParameterKind::flag, "", "", std::move(help));
+}
+
+ParameterSpec text(std::string name, std::string help) {
+  ParameterSpec s = own(std::move(name), ParameterKind::text, "", "", std::move(help));
+  s.quantity = s.help;
+  return s;
+}
+
+ParameterSpec velocity(std::string help) {
+  return own("velocity", ParameterKind::real, "impact velocity", "m/s", std::move(help), positive());
+}
+
+ParameterSpec tangential_velocity() {
+  return own("tangential_velocity", ParameterKind::real, "tangential impact velocity g^T", "m/s",
+             "tangential impact velocity g^T [m/s]: an oblique collision (BSHP96 §II B; 0: head-on)", non_negative());
+}
+
+ParameterSpec with_default(ParameterSpec s, ParameterValue value) {
+  s.default_value = std::move(value);
+  return s;
+}
+
+ParameterSpec materials_file() {
+  for (const ParameterSpec& s : pair_parameters()) {
+    if (s.name == "materials_file") return s;
+  }
+  throw std::logic_error("the pair declares no materials_file");
+}
+
+std::vector<CommandSpec> make_commands() {
+  const ParameterSpec log = flag("log", "geometric spacing of the sweep");
+  return {
+      {"materials", "List the materials table (K13 table 2 and more)", false, false, {materials_file()}},
+      {"models", "List the collision models and contact laws with the parameters each takes", false, false, {}},
+      {"contact", "Static contact of two bodies: Hertz, JKR, DMT or Maugis-Dugdale", true, false,
+       {with_default(own("force", ParameterKind::real, "force", "N", "total normal force [N] (default 0: zero external load)"), 0.0),
+        own("overlap", ParameterKind::real, "overlap", "m", "overlap (mutual approach) [m]"),
+        text("forces", "CSV curve over forces LO:HI:N [N]"), text("overlaps", "CSV curve over overlaps LO:HI:N [m]"),
+        text("contact_radii", "CSV curve over contact radii LO:HI:N [m] (whole curve, both branches)"),
+        flag("log", "geometric spacing of the range")}},
+      {"collide", "One head-on (or oblique) collision: COR, outcome, contact time, energy budget", true, true,
+       {velocity("impact velocity g [m/s]"), tangential_velocity(),
+        flag("trajectory", "include the trajectory (direct integration)"),
+        with_default(own("trajectory_points", ParameterKind::real, "trajectory samples", "",
+                         "samples of the trajectory over about one contact time (default 400)",
+                         Range{2.0, 1e7, true, true, false}),
+                     400.0),
+        own("follow", ParameterKind::real, "follow time", "s",
+            "krijt / jkr-viscoelastic: keep integrating a sticking collision until this time [s]", positive())}},
+      {"curve", "COR against impact velocity (CSV by default)", true, true,
+       {text("velocities", "impact velocities LO:HI:N [m/s]"),
+        text("radii", "radii LO:HI:N of body 1 [m] at a fixed velocity (K13 fig. 5)"),
+        velocity("the impact velocity of a radii sweep [m/s]"), log,
+        flag("closed_forms", "add K13's e_JKR (24), e_D (26), e_I (27) columns (adhesive models)"),
+        tangential_velocity()}},
+      {"analytic", "kappa, g* and the exact COR beside BP04's implicit, series and Pade forms", true, true,
+       {velocity("impact velocity g [m/s]")}},
+      {"sticking", "The sticking velocity of an adhesive model (and its closed forms)", true, true,
+       {text("radii", "radii LO:HI:N of body 1 [m]: CSV of the sticking velocity (K13 fig. 5)"),
+        flag("log", "geometric spacing of the radii"),
+        with_default(own("relative_tolerance", ParameterKind::real, "relative tolerance", "",
+                         "relative width of the final bracket (default 1e-6)", open_interval(1e-12, 0.1)),
+                     1e-6)}},
+      {"rules", "Post-collision velocities and spins (BSHP96 (42)-(43)) of JSON encounters", true, true, {}},
+      {"table", "eps^N(g) and the outcome, or eps^T(g^N, g^T), as a table for other simulators", true, true,
+       {text("velocities", "the table's range LO:HI of (normal) impact speeds [m/s]"),
+        text("tangential_velocities", "a table of eps^T(g^N, g^T) (asperity law) with this range LO:HI of g^T [m/s]"),
+        with_default(own("bound", ParameterKind::real, "interpolation error bound", "",
+                         "interpolation error to reach (default 1e-6)", open_interval(1e-10, 0.1)),
+                     1e-6),
+        velocity("with a saved table (--load): the (normal) impact speed at which to read it [m/s]"),
+        tangential_velocity()}},
+  };
+}
+
+bool declares(const std::vector<ParameterSpec>& specs, std::string_view name) {
+  return std::any_of(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.name == name; });
+}
+
+bool declares(std::span<const ParameterSpec> specs, std::string_view name) {
+  return std::any_of(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.name == name; });
+}
+
+// The models (or laws) that declare `name`.
+std::vector<std::string> takers(std::string_view name, bool laws) {
+  std::vector<std::string> out;
+  if (laws) {
+    for (const auto& row : contact::contact_laws()) {
+      if (declares(row.parameters, name)) out.push_back(row.name);
+    }
+  } else {
+    for (const auto& row : models::model_registry().rows()) {
+      if (declares(row.parameters, name)) out.push_back(row.name);
+    }
+  }
+  return out;
+}
+
+[[noreturn]] void refuse_unknown(const std::string& name, const ParameterValue& value, const CommandSpec& command,
+                                 const std::string& model, const std::vector<std::string>& names) {
+  const std::string value_given = value_text(value);
+  const char* what = command.takes_model ? "model" : "law";
+  if (command.takes_model || command.name == "contact") {
+    const auto others = takers(name, !command.takes_model);
+    if (!others.empty()) {
+      throw InvalidArgument(name, value_given,
+                            fmt::format("no {} with {} {}: {} takes it", name, what, model, fmt::join(others, ", ")));
+    }
+  }
+  std::vector<std::string> owners;
+  for (const CommandSpec& c : commands()) {
+    if (declares(c.parameters, name)) owners.push_back(c.name);
+  }
+  if (!owners.empty()) {
+    throw InvalidArgument(name, value_given,
+                          fmt::format("no {} with bounce {}: it belongs to bounce {}", name, command.name,
+                                      fmt::join(owners, ", ")));
+  }
+  throw InvalidArgument(name, value_given,
+                        fmt::format("a parameter that bounce {} takes: one of {}", command.name, fmt::join(names, ", ")));
+}
+
+std::string chosen(const Inputs& inputs, const char* key, const char* fallback) {
+  const auto it = inputs.find(key);
+  if (it == inputs.end()) return fallback;
+  if (const auto* s = std::get_if<std::string>(&it->second)) return *s;
+  throw InvalidArgument(key, value_text(it->second), "a name");
+}
+
+}  // namespace
+
+const std::vector<CommandSpec>& commands() {
+  static const std::vector<CommandSpec> table = make_commands();
+  return table;
+}
+
+const CommandSpec& command(std::string_view name) {
+  for (const CommandSpec& c : commands()) {
+    if (c.name == name) return c;
+  }
+  std::vector<std::string> names;
+  for (const CommandSpec& c : commands()) names.push_back(c.name);
+  throw InvalidArgument("command", std::string(name), fmt::format("one of {}", fmt::join(names, ", ")));
+}
+
+ParameterSpec model_parameter() {
+  ParameterSpec s = text("model", "");
+  s.kind = ParameterKind::choice;
+  s.choices = models::model_registry().names();
+  s.help = fmt::format("{} (default viscoelastic)", fmt::join(s.choices, " | "));
+  s.quantity = "model";
+  s.default_value = std::string("viscoelastic");
+  return s;
+}
+
+ParameterSpec law_parameter() {
+  ParameterSpec s = text("law", "");
+  s.kind = ParameterKind::choice;
+  for (const auto& row : contact::contact_laws()) s.choices.push_back(row.name);
+  s.help = fmt::format("{} (default hertz)", fmt::join(s.choices, " | "));
+  s.quantity = "law";
+  s.default_value = std::string("hertz");
+  return s;
+}
+
+std::vector<ParameterSpec> offered_parameters(std::string_view name) {
+  const CommandSpec& c = command(name);
+  std::vector<ParameterSpec> extra;
+  if (c.takes_model) {
+    extra.push_back(model_parameter());
+    for (const auto& row : models::model_registry().rows()) extra.insert(extra.end(), row.parameters.begin(), row.parameters.end());
+  }
+  if (c.name == "contact") {
+    extra.push_back(law_parameter());
+    for (const auto& row : contact::contact_laws()) extra.insert(extra.end(), row.parameters.begin(), row.parameters.end());
+  }
+  const std::span<const ParameterSpec> pair = c.takes_pair ? pair_parameters() : std::span<const ParameterSpec>{};
+  return merge_specs({c.parameters, pair, extra});
+}
+
+std::vector<std::string> models_taking(std::string_view parameter) {
+  for (const bool laws : {false, true}) {
+    const auto t = takers(parameter, laws);
+    const std::size_t all = laws ? contact::contact_laws().size() : models::model_registry().rows().size();
+    if (!t.empty()) return t.size() == all ? std::vector<std::string>{} : t;
+  }
+  return {};
+}
+
+namespace detail {
+
+Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
+  Bound b;
+  const bool law = c.name == "contact";
+  std::vector<ParameterSpec> group;  // the model's or the law's parameters
+  if (c.takes_model) {
+    b.model = chosen(inputs, "model", "viscoelastic");
+    group = models::model_registry().at(b.model).parameters;
+  } else if (law) {
+    b.model = chosen(inputs, "law", "hertz");
+    group = contact::contact_law(b.model).parameters;
+  }
+  const std::span<const ParameterSpec> pair = c.takes_pair ? pair_parameters() : std::span<const ParameterSpec>{};
+  Inputs own_in, pair_in, group_in;
+  for (const auto& [name, value] : inputs) {
+    if ((c.takes_model && name == "model") || (law && name == "law")) continue;
+    if (declares(c.parameters, name)) {
+      own_in.emplace(name, value);
+    } else if (declares(pair, name)) {
+      pair_in.emplace(name, value);
+    } else if (declares(group, name)) {
+      group_in.emplace(name, value);
+    } else {
+      std::vector<std::string> names;
+      for (const auto& s : merge_specs({c.parameters, pair, group})) names.push_back(s.name);
+      refuse_unknown(name, value, c, b.model, names);
+    }
+  }
+  b.own = bind_parameters(c.parameters, own_in, "bounce " + c.name);
+  b.pair = bind_parameters(pair, pair_in, "the pair");
+  b.model_parameters = bind_parameters(group, group_in, fmt::format("{} {}", law ? "law" : "model", b.model));
+  return b;
+}
+
+void refuse_given(const Parameters& p, std::span<const char* const> names, std::string_view why) {
+  for (const char* name : names) {
+    const auto it = p.values().find(name);
+    if (it != p.values().end()) throw InvalidArgument(name, value_text(it->second), std::string(why));
+  }
+}
+
+std::vector<double> parse_range(const std::string& name, const std::string& text, bool log) {
+  static const std::regex pattern(R"(^([^:]+):([^:]+):([0-9]+)$)");
+  constexpr long max_points = 10'000'000;
+  const std::string allowed = "LO:HI:N with numbers LO <= HI and an integer N >= 1";
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern)) throw InvalidArgument(name, text, allowed);
+  auto number = [&](const std::string& s) {
+    double v = 0.0;
+    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(v)) throw InvalidArgument(name, text, allowed);
+    return v;
+  };
+  const double lo = number(match[1]), hi = number(match[2]);
+  long n = 0;
+  const std::string count = match[3];
+  const auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
+  if (ec != std::errc() || n > max_points) {
+    throw InvalidArgument(name, text, fmt::format("LO:HI:N with at most N = {} points", max_points));
+  }
+  if (n < 1 || lo > hi) throw InvalidArgument(name, text, allowed);
+  if (log && lo <= 0.0) throw InvalidArgument(name, text, "LO > 0 with log");
+  std::vector<double> values(static_cast<std::size_t>(n));
+  for (long i = 0; i < n; ++i) {
+    const double f = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
+    values[static_cast<std::size_t>(i)] =
+        log ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo))) : lo + f * (hi - lo);
+  }
+  values.front() = lo;
+  values.back() = hi;
+  return values;
+}
+
+std::array<double, 2> parse_interval(const std::string& name, const std::string& text) {
+  const std::string allowed = "LO:HI in m/s with 0 < LO < HI";
+  const auto colon = text.find(':');
+  if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos) {
+    throw InvalidArgument(name, text, allowed);
+  }
+  double lo = 0.0, hi = 0.0;
+  try {
+    lo = parse_real(name, text.substr(0, colon));
+    hi = parse_real(name, text.substr(colon + 1));
+  } catch (const InvalidArgument&) {
+    throw InvalidArgument(name, text, allowed);
+  }
+  if (!(lo > 0.0) || !(hi > lo) || !std::isfinite(hi)) throw InvalidArgument(name, text, allowed);
+  return {lo, hi};
+}
+
+}  // namespace detail
+
+Case make_case(std::string_view name, const Inputs& inputs, std::optional<double> radius) {
+  return detail::make_case(detail::bind_inputs(command(name), inputs), radius);
+}
+
+Case detail::make_case(const Bound& b, std::optional<double> radius) {
+  Pair pair = bounce::make_pair(b.pair, radius);
+  models::Model model = models::make_model(pair, b.model, b.model_parameters);
+  analysis::CollideOptions options = analysis::collide_options(b.model_parameters);
+  return Case{std::move(pair), std::move(model), options, b.pair, b.model_parameters, b.own};
+}
+
+Pair make_pair(const Inputs& inputs) {
+  return bounce::make_pair(bind_parameters(pair_parameters(), inputs, "the pair"));
+}
+
+Parameters check_model(std::string_view name, const Inputs& inputs) {
+  return models::bind_model_parameters(name, inputs);
+}
+
+}  // namespace bounce::api

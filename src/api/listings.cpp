@@ -1,0 +1,97 @@
+// The front door's listings: the materials table and the registries of models and laws.
+#include <string>
+
+#include "binding.hpp"
+#include "bounce/contact/law.hpp"
+#include "bounce/models/registry.hpp"
+#include "bounce/pair/materials_table.hpp"
+
+namespace bounce::api {
+
+namespace {
+
+Record material_record(const Material& m) {
+  Record j;
+  j.set("name", m.name);
+  j.set("youngs_modulus", m.youngs_modulus);
+  j.set("poisson_ratio", m.poisson_ratio);
+  j.set("density", m.density);
+  j.set("surface_energy", m.surface_energy ? Value(*m.surface_energy) : Value());
+  if (m.surface_energy_range) {
+    j.set("surface_energy_range", std::vector<double>{(*m.surface_energy_range)[0], (*m.surface_energy_range)[1]});
+  }
+  j.set("source", m.source);
+  return j;
+}
+
+const char* kind_name(ParameterKind kind) {
+  switch (kind) {
+    case ParameterKind::real: return "real";
+    case ParameterKind::reals: return "reals";
+    case ParameterKind::choice: return "choice";
+    case ParameterKind::text: return "text";
+    case ParameterKind::flag: return "flag";
+  }
+  return "";
+}
+
+Record parameter_record(const ParameterSpec& s) {
+  Record r;
+  r.set("name", s.name);
+  r.set("kind", kind_name(s.kind));
+  r.set("unit", s.unit);
+  r.set("help", s.help);
+  if (s.kind == ParameterKind::real || s.kind == ParameterKind::reals) r.set("allowed", s.range.describe(s.what()));
+  if (s.kind == ParameterKind::choice) r.set("choices", s.choices);
+  r.set("default", s.default_value ? Value(s.default_text()) : Value());
+  return r;
+}
+
+Value parameters_value(const std::vector<ParameterSpec>& specs) {
+  Value::List out;
+  for (const ParameterSpec& s : specs) out.push_back(parameter_record(s));
+  return out;
+}
+
+Record capabilities_record(const models::Capabilities& c) {
+  return Record()
+      .set("adhesive", c.adhesive)
+      .set("dynamic_contact", c.dynamic_contact)
+      .set("master_curve", c.master_curve)
+      .set("stiff", c.stiff)
+      .set("convex", c.convex);
+}
+
+}  // namespace
+
+Value materials(const Inputs& inputs) {
+  const Parameters p = bind_parameters(command("materials").parameters, inputs, "bounce materials");
+  const MaterialTable table =
+      p.given("materials_file") ? MaterialTable::from_file(p.text("materials_file")) : MaterialTable::builtin();
+  Value::List out;
+  for (const Material& m : table.materials()) out.push_back(material_record(m));
+  return out;
+}
+
+Value models() {
+  Value::List model_list, law_list;
+  for (const auto& row : models::model_registry().rows()) {
+    model_list.push_back(Record()
+                             .set("name", row.name)
+                             .set("summary", row.summary)
+                             .set("references", row.references)
+                             .set("capabilities", capabilities_record(row.capabilities))
+                             .set("parameters", parameters_value(row.parameters)));
+  }
+  for (const auto& row : contact::contact_laws()) {
+    law_list.push_back(Record()
+                           .set("name", row.name)
+                           .set("summary", row.summary)
+                           .set("references", row.references)
+                           .set("needs_surface_energy", row.needs_surface_energy)
+                           .set("parameters", parameters_value(row.parameters)));
+  }
+  return Record().set("models", std::move(model_list)).set("laws", std::move(law_list));
+}
+
+}  // namespace bounce::api

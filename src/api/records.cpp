@@ -1,0 +1,133 @@
+// The library's results as Records: one serialisation for the CLI's JSON and Python's dicts.
+#include <cmath>
+
+#include "bounce/api/front_door.hpp"
+#include "bounce/dynamics/outcome.hpp"
+
+namespace bounce::api {
+
+namespace {
+
+Record body_record(const Body& b) {
+  Record r;
+  r.set("material", b.material.name);
+  r.set("youngs_modulus", b.material.youngs_modulus);
+  r.set("poisson_ratio", b.material.poisson_ratio);
+  r.set("density", b.material.density);
+  r.set("surface_energy", b.material.surface_energy ? Value(*b.material.surface_energy) : Value());
+  if (b.is_wall()) {
+    r.set("kind", b.rigid ? "rigid-wall" : "wall");
+  } else {
+    r.set("kind", "sphere");
+    r.set("radius", b.radius);
+    r.set("mass", b.mass());
+  }
+  return r;
+}
+
+Record energy_record(const dynamics::EnergyBudget& e) {
+  return Record()
+      .set("initial_kinetic", e.initial_kinetic)
+      .set("final_kinetic", e.final_kinetic)
+      .set("bulk_dissipated", e.bulk_dissipated)
+      .set("crack_dissipated", e.crack_dissipated)
+      .set("plastic_dissipated", e.plastic_dissipated)
+      .set("elastic_remaining", e.elastic_remaining)
+      .set("surface_remaining", e.surface_remaining)
+      .set("closure_error", e.closure_error);
+}
+
+Record tangential_record(const dynamics::TangentialOutcome& t) {
+  return Record()
+      .set("cor", t.cor)
+      .set("initial_kinetic", t.initial_kinetic)
+      .set("final_kinetic", t.final_kinetic)
+      .set("asperity_dissipated", t.asperity_dissipated)
+      .set("stored_at_end", t.stored_at_end)
+      .set("stiffness_work", t.stiffness_work)
+      .set("breaks", t.breaks)
+      .set("averaged_time", t.averaged_time)
+      .set("steps", t.steps);
+}
+
+Table trajectory_table(const std::vector<dynamics::TrajectorySample>& samples) {
+  Table t;
+  t.columns = {"time",    "overlap", "rate",    "contact_radius",  "elastic_force",   "dissipative_force",
+               "beta",    "kinetic", "elastic", "surface",         "bulk_dissipated", "crack_dissipated"};
+  for (const auto& s : samples) {
+    t.rows.push_back({s.time, s.overlap, s.rate, s.contact_radius, s.elastic_force, s.dissipative_force,
+                      s.effective_surface_energy_ratio, s.kinetic, s.elastic, s.surface, s.bulk_dissipated,
+                      s.crack_dissipated});
+  }
+  return t;
+}
+
+}  // namespace
+
+Record pair_record(const Pair& pair) {
+  Record r;
+  r.set("body1", body_record(pair.body1()));
+  r.set("body2", body_record(pair.body2()));
+  r.set("effective_radius", pair.effective_radius());
+  r.set("effective_mass", pair.effective_mass());
+  r.set("effective_modulus", pair.effective_modulus());
+  r.set("hertz_compliance_d", pair.hertz_compliance_d());
+  r.set("hertz_constant", pair.hertz_constant());
+  r.set("tangential_mass_factor", pair.tangential_mass_factor());
+  r.set("surface_energy", pair.surface_energy() ? Value(*pair.surface_energy()) : Value());
+  return r;
+}
+
+Record outcome_record(const dynamics::CollisionOutcome& o) {
+  Record r;
+  r.set("cor", o.cor);
+  r.set("outcome", dynamics::to_string(o.outcome));
+  r.set("contact_time", o.contact_time);
+  r.set("max_overlap", o.max_overlap);
+  r.set("time_of_max_overlap", o.time_of_max_overlap);
+  r.set("method", o.method);
+  r.set("steps", o.steps);
+  r.set("energy", energy_record(o.energy));
+  if (o.tangential) {
+    r.set("cor_tangential", o.tangential->cor);
+    r.set("tangential", tangential_record(*o.tangential));
+  }
+  r.set("warnings", o.warnings);
+  r.set("notes", o.notes);
+  if (!o.trajectory.empty()) r.set("trajectory", trajectory_table(o.trajectory));
+  return r;
+}
+
+}  // namespace bounce::api
+
+// --- what several commands add --------------------------------------------------------
+
+#include "bounce/analysis/closed_forms.hpp"
+#include "records.hpp"
+
+namespace bounce::api::detail {
+
+void add_scales(Record& out, const Pair& pair, const models::Model& model, double velocity) {
+  if (!model.hertz) return;
+  const analysis::ViscoelasticScales s = analysis::viscoelastic_scales(pair, model, velocity);
+  out.set("dissipative_constant", s.dissipative_constant);
+  out.set("force_constant", s.force_constant);
+  out.set("kappa", s.kappa);
+  if (std::isfinite(s.characteristic_velocity)) out.set("characteristic_velocity", s.characteristic_velocity);
+  out.set("reference_overlap", s.reference_overlap);
+  out.set("hertz_contact_time", s.hertz_contact_time);
+}
+
+Record closed_forms_record(const Pair& pair, const models::Model& model, double velocity) {
+  return to_record(analysis::named_values(analysis::closed_forms(pair, model, velocity)));
+}
+
+Record merged_record(const Pair& pair, double velocity) {
+  const analysis::MergedBody m = analysis::merged_body(pair, velocity);
+  return Record()
+      .set("mass", std::isfinite(m.mass) ? Value(m.mass) : Value("wall"))
+      .set("velocity", m.velocity)
+      .set("frame", "body 2 at rest before the impact");
+}
+
+}  // namespace bounce::api::detail

@@ -1,0 +1,15 @@
+#pragma once
+// Private: Records that several commands of the front door add to their results.
+
+#include "bounce/api/front_door.hpp"
+
+namespace bounce::api::detail {
+
+/// kappa, g* and the Hertz scales of a Hertz-type model (BP04 §8.3); nothing for the others.
+void add_scales(Record& out, const Pair& pair, const models::Model& model, double velocity);
+/// The closed forms beside a collision (analysis/closed_forms.hpp).
+Record closed_forms_record(const Pair& pair, const models::Model& model, double velocity);
+/// Sticking grains as one body (analysis::merged_body).
+Record merged_record(const Pair& pair, double velocity);
+
+}  // namespace bounce::api::detail

@@ -1,0 +1,95 @@
+// The front door's sticking velocity, alone or against the radius (K13 fig. 5, right),
+// beside its closed forms.
+#include "binding.hpp"
+#include "bounce/analysis/sticking.hpp"
+#include "bounce/analytic/adhesive.hpp"
+#include "bounce/core/error.hpp"
+
+namespace bounce::api {
+
+namespace {
+
+// The closed forms beside a sticking velocity: K13 (25) and the exact elastic JKR value;
+// BP04 (8.100), (8.101) and W0 (8.95) for BP04's weak-adhesion model.
+Record sticking_closed_forms(const Pair& pair, const models::Model& model) {
+  const double gamma = pair.require_surface_energy("model " + model.name);
+  const double r = pair.effective_radius(), e = pair.effective_modulus(), m = pair.effective_mass();
+  Record j;
+  j.set("sticking_velocity_jkr", analytic::sticking_velocity_jkr(m, r, e, gamma));
+  j.set("sticking_velocity_k13_25", analytic::sticking_velocity_k13(m, r, e, gamma));
+  if (model.adhesion == models::Adhesion::weak) {
+    const double w0 = analytic::tensile_work(r, e, gamma);
+    j.set("sticking_velocity_bp04_8_100", analysis::sticking_velocity_bp04(pair, model));
+    j.set("sticking_velocity_bp04_8_101",
+          analytic::sticking_velocity_bp04_leading(w0, m, model.hertz->dissipative_constant, model.hertz->force_constant));
+    j.set("tensile_work_bp04_8_95", w0);
+  }
+  j.set("effective_radius", r);
+  return j;
+}
+
+Record sticking_record(const Case& c) {
+  const double tolerance = *c.own.real("relative_tolerance");
+  const analysis::StickingVelocity s = analysis::sticking_velocity(c.pair, c.model, c.options, tolerance);
+  Record j = sticking_closed_forms(c.pair, c.model);
+  j.set("sticking_velocity", s.velocity);
+  j.set("bracket", std::vector<double>{s.lower, s.upper});
+  j.set("collisions", s.collisions);
+  j.set("relative_tolerance", tolerance);
+  return j;
+}
+
+void check_head_on(const Case& c) {
+  detail::refuse_given(c.model_parameters, detail::tangential_names,
+                       "nothing tangential: the sticking velocity is that of head-on collisions");
+}
+
+}  // namespace
+
+Record sticking(const Inputs& inputs, const Progress&) {
+  const Case c = make_case("sticking", inputs);
+  check_head_on(c);
+  detail::refuse_given(c.own, std::array{"log"}, "radii with it (log spaces the radii)");
+  if (c.own.given("radii")) {
+    throw InvalidArgument("radii", c.own.text("radii"), "none for one sticking velocity (sticking_over_radii)");
+  }
+  return sticking_record(c);
+}
+
+Value sticking_over_radii(const Inputs& inputs, const Progress& progress) {
+  const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
+  const auto radii = detail::parse_range("radii", bound.own.text("radii"), bound.own.flag("log"));
+  if (radii.front() <= 0.0) throw InvalidArgument("radii", bound.own.text("radii"), "radii > 0 m (LO > 0)");
+  Value::List rows;
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    const Case c = detail::make_case(bound, radii[i]);
+    if (i == 0) check_head_on(c);
+    Record j;
+    try {
+      j = sticking_record(c);
+    } catch (const NumericalError& e) {  // e.g. no threshold below the sound speed: reported, not fatal
+      j = sticking_closed_forms(c.pair, c.model);
+      j.set("sticking_velocity", nullptr);
+      j.set("note", e.what());
+    }
+    j.set("radius", radii[i]);
+    rows.push_back(std::move(j));
+    if (progress) progress(i + 1, radii.size());
+  }
+  return rows;
+}
+
+Table sticking_table(const Value& rows) {
+  Table t;
+  t.columns = {"radius", "effective_radius", "sticking_velocity", "sticking_velocity_jkr", "sticking_velocity_k13_25",
+               "note"};
+  for (const Value& row : rows.list()) {
+    const Record& j = row.record();
+    t.rows.push_back({j.at("radius"), j.at("effective_radius"), j.at("sticking_velocity"),
+                      j.at("sticking_velocity_jkr"), j.at("sticking_velocity_k13_25"),
+                      j.contains("note") ? j.at("note") : Value()});
+  }
+  return t;
+}
+
+}  // namespace bounce::api

@@ -1,0 +1,215 @@
+#include "bounce/core/parameters.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+
+namespace bounce {
+
+bool Range::contains(double x) const {
+  if (std::isnan(x) || (std::isinf(x) && !infinite)) return false;
+  const bool above = lo_included ? x >= lo : x > lo;
+  const bool below = hi_included ? x <= hi : x < hi;
+  return above && below;
+}
+
+std::string Range::describe(std::string_view what) const {
+  const bool lo_finite = std::isfinite(lo), hi_finite = std::isfinite(hi);
+  if (lo_finite && hi_finite) {
+    return fmt::format("{} {} {} {} {}", format_value(lo), lo_included ? "<=" : "<", what,
+                       hi_included ? "<=" : "<", format_value(hi));
+  }
+  std::string s(what);
+  if (lo_finite) s += fmt::format(" {} {}", lo_included ? ">=" : ">", format_value(lo));
+  if (hi_finite) s += fmt::format(" {} {}", hi_included ? "<=" : "<", format_value(hi));
+  if (infinite) return s;
+  return lo_finite || hi_finite ? s + " and finite" : s + ": a finite number";
+}
+
+Range positive() { return Range{0.0, std::numeric_limits<double>::infinity(), false, false, false}; }
+Range non_negative() { return Range{0.0, std::numeric_limits<double>::infinity(), true, false, false}; }
+Range open_interval(double lo, double hi) { return Range{lo, hi, false, false, false}; }
+
+std::string ParameterSpec::what() const { return unit.empty() ? quantity : fmt::format("{} [{}]", quantity, unit); }
+
+std::string ParameterSpec::default_text() const { return default_value ? value_text(*default_value) : std::string(); }
+
+std::string value_text(const ParameterValue& value) {
+  struct Text {
+    std::string operator()(double x) const { return format_value(x); }
+    std::string operator()(const std::string& s) const { return s.empty() ? "\"\"" : s; }
+    std::string operator()(const std::vector<double>& v) const {
+      std::string s;
+      for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + format_value(v[i]);
+      return s;
+    }
+    std::string operator()(bool b) const { return b ? "true" : "false"; }
+  };
+  return std::visit(Text{}, value);
+}
+
+double parse_real(std::string_view name, std::string_view text, bool infinite) {
+  if (infinite && text == "inf") return std::numeric_limits<double>::infinity();
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) {
+    throw InvalidArgument(std::string(name), text.empty() ? "\"\"" : std::string(text), "a number");
+  }
+  return value;
+}
+
+namespace {
+
+std::string choice_list(const std::vector<std::string>& choices) {
+  if (choices.size() <= 1) return choices.empty() ? std::string() : choices.front();
+  std::vector<std::string> head(choices.begin(), choices.end() - 1);
+  return fmt::format("{} or {}", fmt::join(head, ", "), choices.back());
+}
+
+double checked_real(const ParameterSpec& spec, double x) {
+  if (!spec.range.contains(x)) throw InvalidArgument(spec.name, format_value(x), spec.range.describe(spec.what()));
+  return x;
+}
+
+std::vector<double> reals_from_text(const ParameterSpec& spec, const std::string& text) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    try {
+      out.push_back(parse_real(spec.name, item, spec.range.infinite));
+    } catch (const InvalidArgument&) {
+      throw InvalidArgument(spec.name, text, fmt::format("{} numbers separated by commas: {}", spec.count, spec.what()));
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+// The value converted to the spec's kind and checked against its range or choices.
+ParameterValue checked(const ParameterSpec& spec, const ParameterValue& value) {
+  const auto* text = std::get_if<std::string>(&value);
+  switch (spec.kind) {
+    case ParameterKind::real: {
+      if (const auto* x = std::get_if<double>(&value)) return checked_real(spec, *x);
+      if (text) return checked_real(spec, parse_real(spec.name, *text, spec.range.infinite));
+      throw InvalidArgument(spec.name, value_text(value), "a number");
+    }
+    case ParameterKind::reals: {
+      std::vector<double> v;
+      if (const auto* list = std::get_if<std::vector<double>>(&value)) v = *list;
+      if (text) v = reals_from_text(spec, *text);
+      if (v.size() != spec.count) {
+        throw InvalidArgument(spec.name, value_text(value),
+                              fmt::format("{} numbers separated by commas: {}", spec.count, spec.what()));
+      }
+      for (double x : v) {
+        if (!spec.range.contains(x)) {
+          throw InvalidArgument(spec.name, value_text(value), spec.range.describe(spec.what()));
+        }
+      }
+      return v;
+    }
+    case ParameterKind::choice:
+      if (!text || std::find(spec.choices.begin(), spec.choices.end(), *text) == spec.choices.end()) {
+        throw InvalidArgument(spec.name, value_text(value), choice_list(spec.choices));
+      }
+      return value;
+    case ParameterKind::text:
+      if (!text) throw InvalidArgument(spec.name, value_text(value), fmt::format("text: {}", spec.what()));
+      return value;
+    case ParameterKind::flag:
+      if (!std::holds_alternative<bool>(value)) throw InvalidArgument(spec.name, value_text(value), "true or false");
+      return value;
+  }
+  throw std::logic_error("unknown parameter kind");
+}
+
+}  // namespace
+
+Parameters bind_parameters(std::span<const ParameterSpec> specs, const ParameterInputs& inputs, std::string_view owner) {
+  Parameters p;
+  p.specs_.assign(specs.begin(), specs.end());
+  for (const auto& [name, value] : inputs) {
+    const ParameterSpec* spec = p.spec(name);
+    if (spec == nullptr) {
+      std::vector<std::string> names;
+      for (const ParameterSpec& s : specs) names.push_back(s.name);
+      throw InvalidArgument(name, value_text(value),
+                            fmt::format("a parameter of {}: one of {}", owner, fmt::join(names, ", ")));
+    }
+    p.values_.emplace(name, checked(*spec, value));
+  }
+  return p;
+}
+
+const ParameterSpec* Parameters::spec(std::string_view name) const {
+  for (const ParameterSpec& s : specs_) {
+    if (s.name == name) return &s;
+  }
+  return nullptr;
+}
+
+namespace {
+// The value given, else the default; the name must be declared (a factory asking for an
+// undeclared name is a bug, not bad input).
+const ParameterValue* value_or_default(const Parameters& p, std::string_view name) {
+  const ParameterSpec* spec = p.spec(name);
+  if (spec == nullptr) throw std::logic_error(fmt::format("parameter {} is not declared", name));
+  const auto it = p.values().find(name);
+  if (it != p.values().end()) return &it->second;
+  return spec->default_value ? &*spec->default_value : nullptr;
+}
+}  // namespace
+
+bool Parameters::given(std::string_view name) const { return values_.find(name) != values_.end(); }
+
+std::optional<double> Parameters::real(std::string_view name) const {
+  const ParameterValue* v = value_or_default(*this, name);
+  if (v == nullptr) return std::nullopt;
+  return std::get<double>(*v);
+}
+
+double Parameters::require_real(std::string_view name, std::string_view why) const {
+  const auto x = real(name);
+  if (!x) throw InvalidArgument(std::string(name), "(not given)", std::string(why));
+  return *x;
+}
+
+std::optional<std::vector<double>> Parameters::reals(std::string_view name) const {
+  const ParameterValue* v = value_or_default(*this, name);
+  if (v == nullptr) return std::nullopt;
+  return std::get<std::vector<double>>(*v);
+}
+
+std::string Parameters::text(std::string_view name) const {
+  const ParameterValue* v = value_or_default(*this, name);
+  return v == nullptr ? std::string() : std::get<std::string>(*v);
+}
+
+bool Parameters::flag(std::string_view name) const {
+  const ParameterValue* v = value_or_default(*this, name);
+  return v != nullptr && std::get<bool>(*v);
+}
+
+std::vector<ParameterSpec> merge_specs(std::initializer_list<std::span<const ParameterSpec>> lists) {
+  std::vector<ParameterSpec> out;
+  for (const auto& list : lists) {
+    for (const ParameterSpec& s : list) {
+      const bool seen = std::any_of(out.begin(), out.end(), [&](const ParameterSpec& o) { return o.name == s.name; });
+      if (!seen) out.push_back(s);
+    }
+  }
+  return out;
+}
+
+}  // namespace bounce

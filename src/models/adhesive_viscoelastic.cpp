@@ -1,0 +1,86 @@
+// `adhesive-viscoelastic`: BP04's quasi-static estimate for adhesive viscoelastic spheres
+// (§8.2.3), the forces (8.56)-(8.57) with B of (8.58) as corrected (docs/adhesive.md).
+#include <cmath>
+#include <numbers>
+
+#include "bounce/contact/hertz.hpp"
+#include "bounce/models/normal_force.hpp"
+#include "factories.hpp"
+#include "hertz_type.hpp"
+
+namespace bounce::models {
+
+namespace {
+
+class AdhesiveViscoelasticForce final : public NormalForceModel {
+ public:
+  explicit AdhesiveViscoelasticForce(const AdhesiveViscoelasticParameters& p) : p_(p) {}
+  std::string_view name() const override { return "adhesive-viscoelastic"; }
+  double force(double xi, double rate) const override {  // BP04 (8.56) + (8.57)
+    if (xi <= 0.0) return 0.0;
+    const double q = std::sqrt(std::sqrt(xi));  // xi^{1/4}
+    return p_.rho * xi * q * q + p_.rho * 1.5 * p_.a * q * q * rate - p_.adhesion * xi / q +
+           0.75 * p_.b * p_.adhesion * rate / q;
+  }
+  double force_sign(double xi, double rate) const override { return force(xi, rate); }
+  double elastic_force(double xi) const override {  // (8.56)
+    if (xi <= 0.0) return 0.0;
+    return p_.rho * xi * std::sqrt(xi) - p_.adhesion * std::pow(xi, 0.75);
+  }
+  double elastic_energy(double xi) const override {  // integral of (8.56)
+    if (xi <= 0.0) return 0.0;
+    return 0.4 * p_.rho * xi * xi * std::sqrt(xi) - 4.0 / 7.0 * p_.adhesion * std::pow(xi, 1.75);
+  }
+  double contact_radius(double xi) const override { return contact::hertz::contact_radius(p_.effective_radius, xi); }
+  double reference_overlap(double speed) const override {
+    return power_law_reference_overlap(p_.rho / p_.effective_mass, 1.5, speed);
+  }
+  bool adhesive() const override { return true; }
+  double cutoff_overlap(double speed) const override { return p_.cutoff_fraction * reference_overlap(speed); }
+
+ private:
+  AdhesiveViscoelasticParameters p_;
+};
+
+// B of BP04 (8.57): given, from eta1, eta2 ((8.58) corrected: B = alpha beta =
+// (3 eta2 - eta1)(1 + nu)(1 - 2 nu) / (3 E nu), docs/adhesive.md), or A.
+double dissipative_constant_b(const Pair& pair, const Parameters& p, double a) {
+  if (p.given("B")) return *p.real("B");
+  if (p.given("eta1") && p.given("eta2")) {
+    const Material& m = pair.body1().material;
+    const double nu = m.poisson_ratio;
+    return (3.0 * *p.real("eta2") - *p.real("eta1")) * (1.0 + nu) * (1.0 - 2.0 * nu) / (3.0 * m.youngs_modulus * nu);
+  }
+  // With equal relaxation times of shear and dilatation (eta_i = E_i tau) both A and
+  // B equal tau (docs/adhesive.md), so B = A is the one-parameter choice.
+  return a;
+}
+
+}  // namespace
+
+std::unique_ptr<NormalForceModel> make_adhesive_viscoelastic_force(const AdhesiveViscoelasticParameters& p) {
+  return std::make_unique<AdhesiveViscoelasticForce>(p);
+}
+
+Model make_adhesive_viscoelastic(const Pair& pair, const Parameters& p) {
+  const double gamma = detail::adhesive_surface_energy(pair, "adhesive-viscoelastic");
+  AdhesiveViscoelasticParameters a;
+  a.rho = pair.hertz_constant();
+  // BP04 (8.56): C = sqrt(6 pi gamma / D) R_eff^{3/4}
+  a.adhesion = std::sqrt(6.0 * std::numbers::pi * gamma / pair.hertz_compliance_d()) *
+               std::pow(pair.effective_radius(), 0.75);
+  a.a = detail::dissipative_constant(pair, p, "adhesive-viscoelastic");
+  a.b = dissipative_constant_b(pair, p, a.a);
+  a.effective_mass = pair.effective_mass();
+  a.effective_radius = pair.effective_radius();
+  Model m;
+  m.force = make_adhesive_viscoelastic_force(a);
+  m.hertz = HertzScaling{a.rho, a.a};
+  m.dissipative_constant = a.a;
+  m.viscous_time = detail::viscous_time(pair, p, a.a);
+  m.z0 = *p.real("z0");
+  m.adhesion = Adhesion::weak;
+  return m;
+}
+
+}  // namespace bounce::models

@@ -1,0 +1,65 @@
+#include "catalogue.hpp"
+
+#include "bounce/contact/surface_forces.hpp"
+
+#include <utility>
+
+namespace bounce::models::catalogue {
+
+namespace {
+ParameterSpec real(std::string name, std::string quantity, std::string unit, Range range, std::string help,
+                   std::optional<double> default_value = std::nullopt) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.quantity = std::move(quantity);
+  s.unit = std::move(unit);
+  s.range = range;
+  s.help = std::move(help);
+  if (default_value) s.default_value = *default_value;
+  return s;
+}
+}  // namespace
+
+ParameterSpec dissipative_constant() {
+  return real("A", "dissipative constant A", "s", non_negative(), "dissipative constant A [s] (BP04 (8.38), BSHP96 (23))");
+}
+ParameterSpec shear_viscosity() {
+  return real("eta1", "shear viscosity eta1", "Pa s", non_negative(), "shear viscosity eta1 [Pa s] (A from BP04 (8.38))");
+}
+ParameterSpec bulk_viscosity() {
+  return real("eta2", "bulk viscosity eta2", "Pa s", non_negative(), "bulk viscosity eta2 [Pa s] (A from BP04 (8.38))");
+}
+ParameterSpec relaxation_time() {
+  return real("tvis", "viscous relaxation time T_vis", "s", positive(),
+              "viscous relaxation time T_vis [s] (A = T_vis/nu^2 unless A is given, K13 after (18))");
+}
+ParameterSpec dissipative_constant_b() {
+  return real("B", "dissipative constant B", "s", non_negative(),
+              "dissipative constant B [s] of BP04 (8.57) (default: from eta1, eta2, else A)");
+}
+ParameterSpec z0() { return contact::surface::z0_parameter(); }
+ParameterSpec k() {
+  return real("k", "k (relaxed / instantaneous modulus)", "", open_interval(0.0, 1.0),
+              "relaxed / instantaneous modulus k of the crack law K13 (16) (default 0.02)", 0.02);
+}
+ParameterSpec power_d1() {
+  return real("power_d1", "power-law constant D1", "m^(1-alpha)/s^2", positive(), "power-law D1 [m^{1-alpha}/s^2]");
+}
+ParameterSpec power_alpha() {
+  return real("power_alpha", "power-law elastic exponent alpha", "", positive(),
+              "power-law elastic exponent alpha (default 1.5)", 1.5);
+}
+ParameterSpec power_d2() {
+  return real("power_d2", "power-law constant D2", "m^(1-gamma-beta) s^(beta-2)", non_negative(),
+              "power-law D2 [m^{1-gamma-beta} s^{beta-2}]");
+}
+ParameterSpec power_beta() {
+  return real("power_beta", "power-law rate exponent beta", "", positive(), "power-law rate exponent beta (default 1)",
+              1.0);
+}
+ParameterSpec power_gamma() {
+  return real("power_gamma", "power-law overlap exponent gamma", "", non_negative(),
+              "power-law overlap exponent gamma of the dissipative term (default 0.5)", 0.5);
+}
+
+}  // namespace bounce::models::catalogue

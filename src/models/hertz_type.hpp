@@ -1,0 +1,34 @@
+#pragma once
+// Private: what the Hertz-type models (hertz, viscoelastic, viscoelastic-shifted,
+// adhesive-viscoelastic) share: their dissipative constant, viscous time, geometry.
+
+#include <string_view>
+
+#include "bounce/contact/convex.hpp"
+#include "bounce/core/parameters.hpp"
+#include "bounce/models/normal_force.hpp"
+#include "bounce/pair/pair.hpp"
+
+namespace bounce::models::detail {
+
+/// A [s]: given, from eta1 and eta2 (BP04 (8.38), bodies of one material), or T_vis / nu^2
+/// (K13 after (18)); exactly one of these.
+double dissipative_constant(const Pair& pair, const Parameters& p, std::string_view model);
+
+/// The viscous relaxation time that must be << t_c (BSHP96 (B12), BP04 (8.26)): with
+/// viscosities, BSHP96 (B13) tau_i = eta_i / E_i; otherwise A (for eta2/E2 = eta1/E1 = tau,
+/// (8.38) gives exactly A = tau).
+double viscous_time(const Pair& pair, const Parameters& p, double a);
+
+/// The curvatures given (curvature_radii, curvature_radii2, angle), if any; body 2 defaults
+/// to body 1's shape, or flat for a wall.
+std::optional<contact::convex::Curvatures> curvatures(const Pair& pair, const Parameters& p);
+
+/// C0, the equivalent radius (a^2 = R xi) and m_eff: spheres and walls (rho of BP04
+/// (8.24)), or convex bodies (C0 of (8.21), the equal-area circle).
+HertzGeometry hertz_geometry(const Pair& pair, const std::optional<contact::convex::Curvatures>& shape);
+
+/// The pair's gamma, which adhesive models need > 0.
+double adhesive_surface_energy(const Pair& pair, std::string_view model);
+
+}  // namespace bounce::models::detail

@@ -1,0 +1,65 @@
+// `hertz` and `viscoelastic`: F = C0 (xi^{3/2} + (3/2) A sqrt(xi) xi'), BP04 (8.37), (8.42),
+// BSHP96 (24); hertz is the same law with A = 0.
+#include <cmath>
+#include <string>
+
+#include "bounce/contact/hertz.hpp"
+#include "bounce/models/normal_force.hpp"
+#include "factories.hpp"
+#include "hertz_type.hpp"
+
+namespace bounce::models {
+
+namespace {
+
+class ViscoelasticForce final : public NormalForceModel {
+ public:
+  ViscoelasticForce(const HertzGeometry& g, double a, std::string_view name) : g_(g), a_(a), name_(name) {}
+  std::string_view name() const override { return name_; }
+  double force(double xi, double rate) const override {  // BP04 (8.42), (8.37)
+    if (xi <= 0.0) return 0.0;
+    const double root = std::sqrt(xi);
+    return g_.force_constant * root * (xi + 1.5 * a_ * rate);
+  }
+  double force_sign(double xi, double rate) const override {
+    return xi + 1.5 * a_ * rate;  // F = C0 sqrt(xi) (xi + (3/2) A xi'), continued through xi = 0
+  }
+  double elastic_force(double xi) const override { return contact::hertz::force(g_.force_constant, xi); }
+  double elastic_energy(double xi) const override { return contact::hertz::elastic_energy(g_.force_constant, xi); }
+  double contact_radius(double xi) const override { return contact::hertz::contact_radius(g_.equivalent_radius, xi); }
+  double reference_overlap(double speed) const override {  // BP04 (8.65), alpha = 3/2
+    return power_law_reference_overlap(g_.force_constant / g_.effective_mass, 1.5, speed);
+  }
+
+ private:
+  HertzGeometry g_;
+  double a_;
+  std::string name_;
+};
+
+Model hertz_type(const Pair& pair, const Parameters& p, double a, std::string_view name) {
+  Model m;
+  const HertzGeometry geometry = detail::hertz_geometry(pair, detail::curvatures(pair, p));
+  m.force = make_viscoelastic_force(geometry, a, name);
+  m.hertz = HertzScaling{geometry.force_constant, a};
+  return m;
+}
+
+}  // namespace
+
+std::unique_ptr<NormalForceModel> make_viscoelastic_force(const HertzGeometry& geometry, double dissipative_constant,
+                                                          std::string_view name) {
+  return std::make_unique<ViscoelasticForce>(geometry, dissipative_constant, name);
+}
+
+Model make_hertz(const Pair& pair, const Parameters& p) { return hertz_type(pair, p, 0.0, "hertz"); }
+
+Model make_viscoelastic(const Pair& pair, const Parameters& p) {
+  const double a = detail::dissipative_constant(pair, p, "viscoelastic");
+  Model m = hertz_type(pair, p, a, "viscoelastic");
+  m.dissipative_constant = a;
+  m.viscous_time = detail::viscous_time(pair, p, a);
+  return m;
+}
+
+}  // namespace bounce::models

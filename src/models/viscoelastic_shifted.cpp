@@ -1,0 +1,55 @@
+// `viscoelastic-shifted`: the elastic law at the shifted overlap, F = C0 max(xi + A xi', 0)^{3/2},
+// BSHP96 (25), clamped at zero.
+#include <algorithm>
+#include <cmath>
+
+#include "bounce/contact/hertz.hpp"
+#include "bounce/models/normal_force.hpp"
+#include "factories.hpp"
+#include "hertz_type.hpp"
+
+namespace bounce::models {
+
+namespace {
+
+class ShiftedViscoelasticForce final : public NormalForceModel {
+ public:
+  ShiftedViscoelasticForce(const HertzGeometry& g, double a) : g_(g), a_(a) {}
+  std::string_view name() const override { return "viscoelastic-shifted"; }
+  double force(double xi, double rate) const override {  // BSHP96 (25), clamped at zero
+    if (xi <= 0.0) return 0.0;
+    const double shifted = std::max(xi + a_ * rate, 0.0);
+    return g_.force_constant * shifted * std::sqrt(shifted);
+  }
+  double force_sign(double xi, double rate) const override { return xi + a_ * rate; }
+  double elastic_force(double xi) const override { return contact::hertz::force(g_.force_constant, xi); }
+  double elastic_energy(double xi) const override { return contact::hertz::elastic_energy(g_.force_constant, xi); }
+  double contact_radius(double xi) const override { return contact::hertz::contact_radius(g_.equivalent_radius, xi); }
+  double reference_overlap(double speed) const override {  // BP04 (8.65), alpha = 3/2
+    return power_law_reference_overlap(g_.force_constant / g_.effective_mass, 1.5, speed);
+  }
+
+ private:
+  HertzGeometry g_;
+  double a_;
+};
+
+}  // namespace
+
+std::unique_ptr<NormalForceModel> make_shifted_viscoelastic_force(const HertzGeometry& geometry,
+                                                                  double dissipative_constant) {
+  return std::make_unique<ShiftedViscoelasticForce>(geometry, dissipative_constant);
+}
+
+Model make_viscoelastic_shifted(const Pair& pair, const Parameters& p) {
+  const double a = detail::dissipative_constant(pair, p, "viscoelastic-shifted");
+  const HertzGeometry geometry = detail::hertz_geometry(pair, detail::curvatures(pair, p));
+  Model m;
+  m.force = make_shifted_viscoelastic_force(geometry, a);
+  m.hertz = HertzScaling{geometry.force_constant, a};
+  m.dissipative_constant = a;
+  m.viscous_time = detail::viscous_time(pair, p, a);
+  return m;
+}
+
+}  // namespace bounce::models

@@ -1,0 +1,140 @@
+#include "bounce/pair/pair_parameters.hpp"
+
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "bounce/core/error.hpp"
+#include "bounce/pair/materials_table.hpp"
+
+namespace bounce {
+
+namespace {
+
+ParameterSpec real(std::string name, std::string quantity, std::string unit, std::string help, Range range) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.quantity = std::move(quantity);
+  s.unit = std::move(unit);
+  s.help = std::move(help);
+  s.range = range;
+  return s;
+}
+
+ParameterSpec text(std::string name, std::string help, ParameterKind kind = ParameterKind::text) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.kind = kind;
+  s.quantity = s.help = std::move(help);
+  return s;
+}
+
+// The specs of one body ("" for body 1, "2" for body 2).
+void add_body(std::vector<ParameterSpec>& out, const std::string& n) {
+  const std::string which = n.empty() ? "body 1" : "body 2";
+  const std::string override_note = n.empty() ? " (overrides the material)" : " (default: body 1's)";
+  out.push_back(text("material" + n, n.empty() ? "body 1 material from the table (see `bounce materials`)"
+                                                : "body 2 material (default: body 1's)"));
+  out.push_back(real("E" + n, "Young's modulus E", "Pa", which + " Young's modulus [Pa]" + override_note, positive()));
+  out.push_back(real("nu" + n, "Poisson ratio nu", "", which + " Poisson ratio" + override_note, open_interval(-1.0, 0.5)));
+  out.push_back(real("density" + n, "density", "kg/m^3", which + " density [kg/m^3]" + override_note, positive()));
+  out.push_back(real("gamma" + n, "surface energy gamma", "J/m^2",
+                     which + " surface energy (work of adhesion) [J/m^2]" + override_note, non_negative()));
+  out.push_back(real("radius" + n, "radius", "m", n.empty() ? "body 1 radius [m]" : "body 2 radius [m] (default: body 1's)",
+                     positive()));
+  out.push_back(real("inertia" + n, "moment of inertia factor J/(m R^2)", "",
+                     which + " moment of inertia J/(m R^2) (default 2/5, a solid sphere; BSHP96 (4))", positive()));
+}
+
+std::vector<ParameterSpec> make_specs() {
+  std::vector<ParameterSpec> out;
+  add_body(out, "");
+  add_body(out, "2");
+  out.push_back(text("wall", "body 2 is a flat elastic wall (of body 2's material)", ParameterKind::flag));
+  out.push_back(text("rigid_wall", "body 2 is a flat, ideally rigid wall", ParameterKind::flag));
+  out.push_back(text("materials_file", "TOML materials table to use instead of the built-in one"));
+  return out;
+}
+
+// A body's material: from the table (or body 1's for body 2), with the values given on top.
+Material resolve_material(const Parameters& p, const MaterialTable& table, const std::string& n,
+                          const Material* fallback) {
+  Material m;
+  const std::string name = p.text("material" + n);
+  bool have_base = fallback != nullptr;
+  if (p.given("material" + n)) {
+    try {
+      m = table.at(name);
+    } catch (const InvalidArgument& e) {
+      throw e.renamed("material" + n);
+    }
+    have_base = true;
+  } else if (fallback) {
+    m = *fallback;
+  }
+  auto take = [&](const std::string& field, double& value) {
+    if (p.given(field + n)) {
+      value = *p.real(field + n);
+    } else if (!have_base) {
+      throw InvalidArgument(field + n, "(not given)", fmt::format("a value, or material{} from the table", n));
+    }
+  };
+  take("E", m.youngs_modulus);
+  take("nu", m.poisson_ratio);
+  take("density", m.density);
+  if (p.given("gamma" + n)) m.surface_energy = *p.real("gamma" + n);
+  const bool overridden = p.given("E" + n) || p.given("nu" + n) || p.given("density" + n) || p.given("gamma" + n);
+  if (overridden && !m.name.empty()) m.name += " (modified)";
+  return m;
+}
+
+Body second_body(const Parameters& p, const Material& m2, const Body& b1) {
+  const bool wall = p.flag("wall"), rigid = p.flag("rigid_wall");
+  if (wall && rigid) throw InvalidArgument("rigid_wall", "true", "a wall or a rigid wall, not both");
+  if (wall || rigid) {
+    for (const char* name : {"radius2", "inertia2"}) {
+      if (p.given(name)) {
+        throw InvalidArgument(name, value_text(p.values().find(name)->second), "none with a wall (a wall is flat)");
+      }
+    }
+    return rigid ? rigid_wall(m2) : bounce::wall(m2);
+  }
+  Body b2 = sphere(m2, p.real("radius2").value_or(b1.radius));
+  b2.inertia_factor = p.real("inertia2").value_or(b1.inertia_factor);
+  return b2;
+}
+
+}  // namespace
+
+std::span<const ParameterSpec> pair_parameters() {
+  static const std::vector<ParameterSpec> specs = make_specs();
+  return specs;
+}
+
+Pair make_pair(const Parameters& p, std::optional<double> radius) {
+  const MaterialTable table =
+      p.given("materials_file") ? MaterialTable::from_file(p.text("materials_file")) : MaterialTable::builtin();
+  const Material m1 = resolve_material(p, table, "", nullptr);
+  const Material m2 = resolve_material(p, table, "2", &m1);
+  Body b1 = sphere(m1, radius ? *radius : p.require_real("radius", "a radius > 0 m for body 1"));
+  if (auto j = p.real("inertia")) b1.inertia_factor = *j;
+  const Body b2 = second_body(p, m2, b1);
+  try {
+    return Pair(b1, b2);
+  } catch (const InvalidArgument& e) {
+    throw e.renamed(pair_parameter_name(e.parameter()));
+  }
+}
+
+std::string pair_parameter_name(std::string_view field) {
+  static const std::regex body(R"(^body([12])\.(\w+)$)");
+  const std::string text(field);
+  std::smatch match;
+  if (!std::regex_match(text, match, body)) return text;
+  std::string name = match[2].str();
+  if (name == "inertia_factor") name = "inertia";
+  if (name == "rigid") name = "rigid_wall";
+  return name + (match[1] == "2" ? "2" : "");
+}
+
+}  // namespace bounce
