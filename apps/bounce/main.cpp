@@ -33,7 +33,9 @@ int main(int argc, char** argv) {
     std::cerr << "bounce: error: " << e.what() << " (expected an option listed by `bounce <command> --help`)\n";
     return 2;
   } catch (const CLI::RequiredError& e) {
-    std::cerr << fmt::format("bounce: error: a command is required: one of {}\n", fmt::join(names, ", "));
+    const bool typed = argc > 1 && argv[1][0] != '-';  // a word that is no command
+    std::cerr << fmt::format("bounce: error: command = {} is invalid: expected one of {}\n",
+                             typed ? argv[1] : "(not given)", fmt::join(names, ", "));
     return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "bounce: error: " << e.what() << '\n';

@@ -136,10 +136,6 @@ CollisionOutcome dynamic_contact_collision(const Pair& pair, const models::Model
   if (options.method == Method::master) {
     throw InvalidArgument("method", "master", fmt::format("integrate for model {} (it has no master curve)", model.name));
   }
-  if (model.end_rule == models::EndRule::force) {
-    throw InvalidArgument("contact_end", "force",
-                          fmt::format("overlap for model {} (its contact ends when the crack runs away)", model.name));
-  }
   const models::DynamicContact& contact = *model.dynamic_contact;
   const models::KrijtParameters& p = contact.parameters;
   const double hysteresis = models::krijt_hysteresis_estimate(p, velocity);

@@ -13,13 +13,13 @@ namespace bounce::api {
 
 namespace {
 
-// The tangential law needs a tangential velocity; the speed itself needs the law.
-void check_oblique(const Case& c, bool oblique) {
-  if (!oblique) {
-    detail::refuse_given(c.model_parameters, detail::tangential_names,
-                         "a tangential velocity too (tangential_velocity): it is the tangential law of an oblique "
-                         "collision");
-  }
+// The tangential law's parameters need a tangential velocity (checked before the model is
+// built, which would ask for the rest of the law first).
+void check_oblique(const detail::Bound& b) {
+  if (b.own.real("tangential_velocity").value_or(0.0) > 0.0) return;
+  detail::refuse_given(b.model_parameters, detail::tangential_names,
+                       "a tangential velocity too (tangential_velocity): it is the tangential law of an oblique "
+                       "collision");
 }
 
 // How to collide: the model's numerical settings and the command's own (tangential
@@ -27,7 +27,6 @@ void check_oblique(const Case& c, bool oblique) {
 analysis::CollideOptions collide_options(const Case& c) {
   analysis::CollideOptions o = c.options;
   o.tangential_velocity = c.own.real("tangential_velocity").value_or(0.0);
-  check_oblique(c, o.tangential_velocity > 0.0);
   if (c.own.spec("trajectory") != nullptr) {
     o.record_trajectory = c.own.flag("trajectory");
     o.trajectory_points = static_cast<int>(*c.own.real("trajectory_points"));
@@ -48,7 +47,9 @@ analysis::CollideOptions collide_options(const Case& c) {
 }  // namespace
 
 Record collide(const Inputs& inputs) {
-  const Case c = make_case("collide", inputs);
+  const detail::Bound bound = detail::bind_inputs(command("collide"), inputs);
+  check_oblique(bound);
+  const Case c = detail::make_case(bound);
   const double velocity = c.own.require_real("velocity", "an impact velocity > 0 m/s");
   const auto outcome = analysis::collide(c.pair, c.model, velocity, collide_options(c));
   Record out = outcome_record(outcome);
@@ -111,6 +112,7 @@ Record curve_point(const dynamics::CollisionOutcome& o, const Sweep& s, std::siz
 
 Record curve(const Inputs& inputs, const Progress& progress) {
   const detail::Bound bound = detail::bind_inputs(command("curve"), inputs);
+  check_oblique(bound);
   const Sweep s = sweep_of(bound.own);
   const Case first = detail::make_case(bound, s.by_radius ? std::optional(s.values.front()) : std::nullopt);
   const bool closed = first.own.flag("closed_forms");
@@ -173,7 +175,9 @@ Table curve_table(const Record& curve) {
 }
 
 Table collide_columns(const Inputs& inputs, const std::vector<double>& velocities) {
-  const Case c = make_case("collide", inputs);
+  const detail::Bound bound = detail::bind_inputs(command("collide"), inputs);
+  check_oblique(bound);
+  const Case c = detail::make_case(bound);
   detail::refuse_given(c.own, std::array{"velocity", "trajectory", "follow"},
                        "a single velocity (an array of speeds gives the columns of a curve)");
   const analysis::CollideOptions options = collide_options(c);

@@ -138,7 +138,8 @@ std::vector<std::string> takers(std::string_view name, bool laws) {
     const auto others = takers(name, !command.takes_model);
     if (!others.empty()) {
       throw InvalidArgument(name, value_given,
-                            fmt::format("no {} with {} {}: {} takes it", name, what, model, fmt::join(others, ", ")));
+                            fmt::format("no {} with {} {} ({}s that take it: {})", name, what, model, what,
+                                        fmt::join(others, ", ")));
     }
   }
   std::vector<std::string> owners;

@@ -55,6 +55,20 @@ struct CvodeIntegrator::Impl {
   void check(int flag, const char* what) const {
     if (flag < 0) throw NumericalError(fmt::format("CVODE {} failed ({}): {}", what, flag, last_error));
   }
+
+  Impl() = default;
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+  // Every SUNDIALS handle is freed here, also when the integrator's constructor throws
+  // half-way (impl_ is then destroyed as a finished member).
+  ~Impl() {
+    if (memory) CVodeFree(&memory);
+    if (solver) SUNLinSolFree(solver);
+    if (matrix) SUNMatDestroy(matrix);
+    if (y) N_VDestroy(y);
+    if (atol) N_VDestroy(atol);
+    if (context) SUNContext_Free(&context);
+  }
 };
 
 CvodeIntegrator::CvodeIntegrator(const StiffSystem& system, const std::vector<double>& y0, double t0,
@@ -97,15 +111,7 @@ CvodeIntegrator::CvodeIntegrator(const StiffSystem& system, const std::vector<do
   }
 }
 
-CvodeIntegrator::~CvodeIntegrator() {
-  Impl& m = *impl_;
-  if (m.memory) CVodeFree(&m.memory);
-  if (m.solver) SUNLinSolFree(m.solver);
-  if (m.matrix) SUNMatDestroy(m.matrix);
-  if (m.y) N_VDestroy(m.y);
-  if (m.atol) N_VDestroy(m.atol);
-  if (m.context) SUNContext_Free(&m.context);
-}
+CvodeIntegrator::~CvodeIntegrator() = default;
 
 StiffIntegrator::Step CvodeIntegrator::step() {
   Impl& m = *impl_;

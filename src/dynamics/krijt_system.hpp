@@ -86,7 +86,7 @@ class KrijtSystem final : public StiffSystem {
 
   int rhs(double, const double* y, double* dydt) const override {
     const Physical x = physical(y);
-    if (!in_domain(x)) return 1;  // recoverable: CVODE retries a smaller step
+    if (!in_domain(x)) return 1;  // recoverable: the engine retries a smaller step
     const double fe = models::elastic_force(p_, x.a, x.delta);
     const double fd = models::bulk_dissipative_force(p_, x.a, x.rate);
     const double a_dot = c_ * models::crack_speed_function(x.beta, p_.k).value;
@@ -132,27 +132,37 @@ class KrijtSystem final : public StiffSystem {
     return 0;
   }
 
-  int event_count() const override { return 6; }
+  /// The events, by index.
+  enum Event : int {
+    max_compression,  ///< delta' = 0
+    breaks,           ///< beta reaches (1 - margin)/k: the crack runs away, the contact breaks
+    sticks,           ///< the mechanical energy below what a separation needs: sticking is certain
+    phase_change,     ///< time -> closing, closing or opening -> time
+    enters_opening,   ///< time -> opening
+    time_limit,       ///< the time budget (or the end of a followed collision)
+    event_count_,
+  };
+  int event_count() const override { return event_count_; }
   void events(double t, const double* y, double* g) const override {
     const Physical x = physical(y);
-    g[0] = y[1];                                       // maximum compression
-    g[1] = beta_break_ - x.beta;                       // the contact breaks
-    g[2] = stick_event_ ? mechanical_energy(y) - sticking_threshold(x) : 1.0;  // sticking is certain
-    switch (phase_) {                                  // 3, 4: the phase changes
+    g[max_compression] = y[1];
+    g[breaks] = beta_break_ - x.beta;
+    g[sticks] = stick_event_ ? mechanical_energy(y) - sticking_threshold(x) : 1.0;
+    switch (phase_) {
       case Phase::time:
-        g[3] = x.beta - closing_entry;
-        g[4] = std::min(opening_entry - x.beta, relative_crack_rate(x) + collapse_entry);
+        g[phase_change] = x.beta - closing_entry;
+        g[enters_opening] = std::min(opening_entry - x.beta, relative_crack_rate(x) + collapse_entry);
         break;
       case Phase::closing:
-        g[3] = closing_exit - x.beta;
-        g[4] = 1.0;
+        g[phase_change] = closing_exit - x.beta;
+        g[enters_opening] = 1.0;
         break;
       case Phase::opening:
-        g[3] = std::max(x.beta - opening_exit, -(relative_crack_rate(x) + collapse_exit));
-        g[4] = 1.0;
+        g[phase_change] = std::max(x.beta - opening_exit, -(relative_crack_rate(x) + collapse_exit));
+        g[enters_opening] = 1.0;
         break;
     }
-    g[5] = time_limit_ - t;                            // the time budget
+    g[time_limit] = time_limit_ - t;
   }
   void set_phase(Phase phase) { phase_ = phase; }
   void set_time_limit(double t) { time_limit_ = t; }

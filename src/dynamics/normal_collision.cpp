@@ -3,7 +3,6 @@
 #include <cmath>
 #include <vector>
 
-#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "event_integrator.hpp"
 #include "normal_system.hpp"
@@ -24,8 +23,6 @@ struct ScaledSystem {
 CollisionOutcome integrate_normal_collision(const models::NormalForceModel& model,
                                             double effective_mass, double speed,
                                             const NormalCollisionOptions& options) {
-  require_positive("velocity", speed, "impact velocity [m/s]");
-  require_positive("effective_mass", effective_mass, "effective mass [kg]");
   const double xi0 = model.reference_overlap(speed);
   const double time_unit = xi0 / speed;
   const double energy_unit = effective_mass * speed * speed;
@@ -75,9 +72,9 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
   normal_end.x = end[0];
   normal_end.v = end[1];
   normal_end.dissipated = end[2];
-  normal_end.stuck = result.terminal.index == 3;
+  normal_end.stuck = result.terminal.id == detail::id(detail::CollisionEvent::sticks);
   for (const auto& hit : result.hits) {
-    if (hit.index == 0) {
+    if (hit.id == detail::id(detail::CollisionEvent::max_compression)) {
       normal_end.compressed = true;
       normal_end.max_overlap = hit.state[0];
       normal_end.max_overlap_time = hit.time;

@@ -37,42 +37,56 @@ struct NormalScaled {
   }
 };
 
-/// Events 0-3 of a normal collision: 0 maximum compression (arms 1), 1 the end of
-/// contact under `rule`, 2 under the force rule the overlap returning to 0, 3 for
-/// adhesive laws the mechanical energy turning negative (the grains stick).
+/// The events of a normal collision (their ids), and those an oblique one adds.
+enum class CollisionEvent {
+  max_compression,  ///< xi' = 0: arms end_of_contact
+  end_of_contact,   ///< under the end rule: xi back to the cutoff, or the force vanishing
+  overlap_zero,     ///< under the force rule: the overlap returning to 0 first
+  sticks,           ///< adhesive laws: the mechanical energy turning negative (never separate)
+  asperity_break,   ///< the tangential spring reaching mu F^N
+  mode_change,      ///< to or from the averaged sawtooth of dense breaking
+  end_of_record,    ///< the end of a recorded normal force (integrate_tangential_motion)
+};
+constexpr int id(CollisionEvent e) { return static_cast<int>(e); }
+
+template <std::size_t N>
+Event<N> make_event(CollisionEvent which, std::function<double(double, const State<N>&)> g, bool terminal, bool armed) {
+  Event<N> e;
+  e.id = id(which);
+  e.g = std::move(g);
+  e.direction = -1;
+  e.terminal = terminal;
+  e.armed = armed;
+  return e;
+}
+
+/// The events of a normal collision under `rule` (cutoff: the scaled overlap where the
+/// contact starts and ends).
 template <std::size_t N>
 std::vector<Event<N>> normal_events(const models::NormalForceModel& model, EndRule rule, double cutoff, double xi0,
                                     double speed, double energy_unit) {
-  if (model.adhesive() && rule == EndRule::force) {
-    throw InvalidArgument("contact_end", "force",
-                          "overlap for adhesive models (their contact ends when the overlap returns to 0)");
-  }
-  std::vector<Event<N>> events(4);
-  events[0].g = [](double, const State<N>& y) { return y[1]; };
-  events[0].direction = -1;
-  events[0].terminal = false;
-  events[0].arms = 1;
+  std::vector<Event<N>> events;
+  events.push_back(make_event<N>(CollisionEvent::max_compression, [](double, const State<N>& y) { return y[1]; },
+                                 false, true));
+  events.back().arms = id(CollisionEvent::end_of_contact);
   if (rule == EndRule::overlap) {
-    events[1].g = [cutoff](double, const State<N>& y) { return y[0] - cutoff; };
+    events.push_back(make_event<N>(CollisionEvent::end_of_contact,
+                                   [cutoff](double, const State<N>& y) { return y[0] - cutoff; }, true, false));
   } else {
-    events[1].g = [&model, xi0, speed](double, const State<N>& y) {
-      return model.force_sign(xi0 * y[0], speed * y[1]);
-    };
+    events.push_back(make_event<N>(
+        CollisionEvent::end_of_contact,
+        [&model, xi0, speed](double, const State<N>& y) { return model.force_sign(xi0 * y[0], speed * y[1]); }, true,
+        false));
   }
-  events[1].direction = -1;
-  events[1].terminal = true;
-  events[1].armed = false;
-  events[2].g = [](double, const State<N>& y) { return y[0]; };
-  events[2].direction = -1;
-  events[2].terminal = true;
-  events[2].armed = rule == EndRule::force;
+  events.push_back(make_event<N>(CollisionEvent::overlap_zero, [](double, const State<N>& y) { return y[0]; }, true,
+                                 rule == EndRule::force));
   // (1/2) xi'^2 + U(xi)/m never increases and must be >= 0 at separation (U(0) = 0).
-  events[3].g = [&model, xi0, energy_unit](double, const State<N>& y) {
-    return 0.5 * y[1] * y[1] + model.elastic_energy(xi0 * y[0]) / energy_unit;
-  };
-  events[3].direction = -1;
-  events[3].terminal = true;
-  events[3].armed = model.adhesive();
+  events.push_back(make_event<N>(
+      CollisionEvent::sticks,
+      [&model, xi0, energy_unit](double, const State<N>& y) {
+        return 0.5 * y[1] * y[1] + model.elastic_energy(xi0 * y[0]) / energy_unit;
+      },
+      true, model.adhesive()));
   return events;
 }
 

@@ -6,9 +6,10 @@
 #include <tuple>
 #include <utility>
 
-#include <boost/math/tools/toms748_solve.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include "event_locator.hpp"
 
 namespace bounce::dynamics::detail {
 
@@ -17,7 +18,9 @@ namespace {
 // RODAS in the transformed form of Hairer & Wanner (IV.7.25): stage i solves
 //   (I/(gamma h) - J) g_i = f(t + c_i h, y + sum a_ij g_j) + d_i h f_t + sum c_ij g_j / h,
 // the solution is y + sum a_5j g_j + g_5 + g_6 and g_6 the error estimate.
-// Coefficients as in Boost.Odeint's default_rosenbrock_coefficients.
+// Coefficients of Hairer's rodas.f (method 1). Boost.Odeint's default_rosenbrock_coefficients
+// has the same values but d4 = +0.0362 (rodas.f: -0.0362); d_i multiplies only f_t, which
+// is zero for bounce's autonomous systems, so the sign does not show in its results.
 struct Coefficients {
   static constexpr double gamma = 0.25;
   static constexpr double d1 = 0.25, d2 = -0.1043, d3 = 0.1035, d4 = -0.3620000000000023e-01;
@@ -202,26 +205,21 @@ bool RodasIntegrator::attempt(double h, Vec& y_new, Vec& error) {
   return true;
 }
 
-StiffIntegrator::Step RodasIntegrator::step() {
-  if (steps_ >= settings_.max_steps) {
-    throw StepBudgetExceeded(fmt::format("stiff integration stopped after {} steps at scaled time {:.6g}", steps_, t_));
-  }
+// One accepted step from (t_, y_) (step-size control of Hairer & Wanner IV (8.21) with
+// Gustafsson's predictive controller): its size, and the new state in y_new.
+double RodasIntegrator::accepted_step(Vec& y_new) {
   constexpr double safety = 0.9, max_shrink = 5.0, max_growth = 1.0 / 6.0;  // fac1, fac2 of (8.21)
-  Vec y_new{}, error{};
+  Vec error{};
   int failures = 0;
   double h = std::min(h_, settings_.max_time - t_);
   for (;;) {
     if (!(h > 4.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(t_), 1e-300)) || failures > 200) {
-      throw NumericalError(fmt::format("RODAS: step size underflow at scaled time {:.6g} (h = {:.3g}, state {:.6g}, {} failures)", t_, h, fmt::join(y_.begin(), y_.begin() + n_, ", "), failures));
+      throw NumericalError(fmt::format("RODAS: step size underflow at scaled time {:.6g} (h = {:.3g}, state {:.6g}, {} failures)",
+                                       t_, h, fmt::join(y_.begin(), y_.begin() + n_, ", "), failures));
     }
-    if (!attempt(h, y_new, error)) {  // outside the domain: a much smaller step
-      ++failures;
-      h *= 0.25;
-      last_rejected_ = true;
-      continue;
-    }
-    const double err = error_norm(y_new, error);
-    if (!std::isfinite(err)) {
+    const bool inside = attempt(h, y_new, error);
+    const double err = inside ? error_norm(y_new, error) : HUGE_VAL;
+    if (!std::isfinite(err)) {  // outside the domain or no error estimate: a much smaller step
       ++failures;
       h *= 0.25;
       last_rejected_ = true;
@@ -240,72 +238,84 @@ StiffIntegrator::Step RodasIntegrator::step() {
       if (last_rejected_) h_next = std::min(h_next, h);
       last_rejected_ = false;
       h_ = h_next;
-      break;
+      return h;
     }
     ++failures;
     h /= factor;
     last_rejected_ = true;
   }
+}
+
+// The events that fire in the last step [t_old_, t_new_], located on the dense output
+// (event_locator.hpp) just past their crossing (so that they cannot fire again): the
+// earliest and every one within round-off of it.
+std::vector<int> RodasIntegrator::fired(const Events& g, double& first) const {
+  std::vector<std::pair<int, double>> roots;
+  first = t_new_;
+  for (std::size_t i = 0; i < enabled_.size(); ++i) {
+    if (!enabled_[i]) continue;
+    auto gi = [&](double t) { return events_at(t, interpolate(t))[i]; };
+    const auto [lo, hi] = locate(gi, t_old_, t_new_, g_[i], g[i], settings_.event_directions[i], false);
+    if (std::isnan(hi)) continue;
+    roots.emplace_back(static_cast<int>(i), hi);
+    first = std::min(first, hi);
+  }
+  std::vector<int> out;
+  const double close = 8.0 * std::numeric_limits<double>::epsilon() * (std::abs(first) + std::abs(h_old_));
+  for (const auto& [index, root] : roots) {
+    if (root <= first + close) out.push_back(index);
+  }
+  return out;
+}
+
+// Step again, exactly to the event at `first`: the order-3 dense output is less accurate
+// than the order-4 step (an energy budget closed on interpolated states showed it). The
+// fired events are on their far side there by construction.
+RodasIntegrator::Events RodasIntegrator::step_to_event(double first, const std::vector<int>& fired) {
+  t_ = t_old_;
+  y_ = y_old_;
+  Vec y_event{}, unused{};
+  if (first < t_new_ && first > t_old_ && attempt(first - t_old_, y_event, unused)) {
+    dense_output();
+    t_new_ = first;
+    y_new_ = y_ = y_event;
+  } else {
+    y_ = interpolate(first);
+  }
+  t_ = first;
+  Events g = events_at(t_, y_);
+  for (int index : fired) {
+    const int dir = settings_.event_directions[static_cast<std::size_t>(index)];
+    double& value = g[static_cast<std::size_t>(index)];
+    if (dir < 0 && value > 0.0) value = 0.0;
+    if (dir > 0 && value < 0.0) value = 0.0;
+  }
+  return g;
+}
+
+StiffIntegrator::Step RodasIntegrator::step() {
+  if (steps_ >= settings_.max_steps) {
+    throw StepBudgetExceeded(fmt::format("stiff integration stopped after {} steps at scaled time {:.6g}", steps_, t_));
+  }
+  Vec y_new{};
+  const double h = accepted_step(y_new);
   ++steps_;
   dense_output();
   t_old_ = t_;
   y_old_ = y_;
   t_new_ = t_ + h;
   y_new_ = y_new;
-
   Step s;
   s.t0 = t_old_;
   s.t1 = t_new_;
   t_ = t_new_;
   y_ = y_new;
-  // Events: a sign change in the requested direction, located on the dense output;
-  // the step ends at the earliest, just past the crossing (so that it cannot fire again).
   Events g = events_at(t_new_, y_new_);
   double first = t_new_;
-  std::vector<std::pair<int, double>> roots;
-  for (std::size_t i = 0; i < enabled_.size(); ++i) {
-    if (!enabled_[i]) continue;
-    const int dir = settings_.event_directions[i];
-    const bool falling = g_[i] > 0.0 && g[i] <= 0.0, rising = g_[i] < 0.0 && g[i] >= 0.0;
-    if (!((dir <= 0 && falling) || (dir >= 0 && rising))) continue;
-    auto gi = [&](double t) { return events_at(t, interpolate(t))[i]; };
-    double root = t_new_;
-    if (gi(t_new_) != 0.0) {
-      boost::uintmax_t iterations = 100;
-      const auto bracket = boost::math::tools::toms748_solve(gi, t_old_, t_new_, g_[i], g[i],
-                                                             boost::math::tools::eps_tolerance<double>(52), iterations);
-      root = bracket.second;
-    }
-    roots.emplace_back(static_cast<int>(i), root);
-    first = std::min(first, root);
-  }
-  if (!roots.empty()) {
-    const double close = 8.0 * std::numeric_limits<double>::epsilon() * (std::abs(first) + std::abs(h_old_));
-    for (const auto& [index, root] : roots) {
-      if (root <= first + close) s.fired.push_back(index);
-    }
+  s.fired = fired(g, first);
+  if (!s.fired.empty()) {
     s.t1 = first;
-    // Step again, exactly to the event: the order-3 dense output is less accurate
-    // than the order-4 step (an energy budget closed on interpolated states showed it).
-    t_ = t_old_;
-    y_ = y_old_;
-    Vec y_event{}, unused{};
-    if (first < t_new_ && first > t_old_ && attempt(first - t_old_, y_event, unused)) {
-      dense_output();
-      t_new_ = first;
-      y_new_ = y_ = y_event;
-    } else {
-      y_ = interpolate(first);
-    }
-    t_ = first;
-    g = events_at(t_, y_);
-    // A fired falling (rising) event is on its far side here by construction.
-    for (int index : s.fired) {
-      const int dir = settings_.event_directions[static_cast<std::size_t>(index)];
-      double& value = g[static_cast<std::size_t>(index)];
-      if (dir < 0 && value > 0.0) value = 0.0;
-      if (dir > 0 && value < 0.0) value = 0.0;
-    }
+    g = step_to_event(first, s.fired);
   }
   g_ = g;
   for (int i = 0; i < n_; ++i) {

@@ -1,9 +1,9 @@
 #pragma once
 // Private: the RODAS engine of stiff.hpp, a Rosenbrock method of order 4 with an
 // embedded order-3 error estimate and an order-3 dense output (Hairer & Wanner,
-// Solving ODEs II, §IV.7, with the coefficients of RODAS as in Boost.Odeint's
-// rosenbrock4), the step-size controller of Gustafsson (Hairer & Wanner IV.8,
-// (8.21)) and event location by TOMS 748 on the dense output.
+// Solving ODEs II, §IV.7, with the coefficients of Hairer's rodas.f), the step-size
+// controller of Gustafsson (Hairer & Wanner IV.8, (8.21)) and event location on the
+// dense output (event_locator.hpp, shared with the explicit engine).
 //
 // Written for the small systems of bounce (n <= 8, state on the stack): see
 // stiff.hpp for why a library engine is not used here.
@@ -35,11 +35,14 @@ class RodasIntegrator final : public StiffIntegrator {
   /// when a stage left the system's domain.
   bool attempt(double h, Vec& y_new, Vec& error);
   double error_norm(const Vec& y_new, const Vec& error) const;
+  double accepted_step(Vec& y_new);
   double initial_step();
   void dense_output();
   Vec interpolate(double t) const;
   using Events = std::array<double, max_events>;
   Events events_at(double t, const Vec& y) const;
+  std::vector<int> fired(const Events& g, double& first) const;
+  Events step_to_event(double first, const std::vector<int>& fired);
 
   const StiffSystem& system_;
   StiffSettings settings_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 // Boost 1.74's pchip.hpp calls isnan unqualified; it must be visible where the header
@@ -146,33 +147,180 @@ struct TangentialRun {
   }
 };
 
-// Events 4 (break) and 5 (mode change) on the tangential components starting at `at`
-// (z' = y[at], q = y[at + 1]); `force` gives the scaled normal force of a state.
+// A run of the tangential motion: time unit t_u, the normal speed over the tangential one,
+// and the normal length that sets the spring's stiffness (xi0, or g^N t_u for a recording).
+TangentialRun start_run(const TangentialModel& tangential, double normal_speed, double tangential_speed,
+                        double time_unit, double normal_length, double f0) {
+  TangentialRun run;
+  run.c.m = tangential;
+  run.c.ratio = normal_speed / tangential_speed;
+  if (tangential.law == TangentialLaw::asperity) {
+    run.c.lambda_t = tangential_speed * time_unit / tangential.asperity_size;
+    run.c.lambda_n = normal_length / tangential.asperity_size;
+  }
+  run.c.gamma_t = tangential.shear_damping * time_unit;
+  if (run.asperity() && run.c.averaging_holds(f0, 1.0)) run.c.mode = Mode::averaged;  // dense from the start
+  return run;
+}
+
+using detail::CollisionEvent;
+
+// The asperity's break and the change of mode on the tangential components starting at
+// `at` (z' = y[at], q = y[at + 1]); `force` gives the scaled normal force of a state.
 template <std::size_t N, class Force>
 void add_tangential_events(std::vector<detail::Event<N>>& events, const TangentialScaled& c, std::size_t at,
                            Force force) {
-  detail::Event<N> hold, mode;
-  hold.g = [c, at, force](double t, const detail::State<N>& y) { return c.hold(force(t, y), y[at + 1]); };
-  hold.direction = -1;
-  hold.terminal = true;
+  const bool asperity = c.m.law == TangentialLaw::asperity;
+  auto hold = detail::make_event<N>(
+      CollisionEvent::asperity_break,
+      [c, at, force](double t, const detail::State<N>& y) { return c.hold(force(t, y), y[at + 1]); }, true,
+      asperity && c.mode == Mode::resolved);
   hold.graze = true;  // an asperity loaded just up to mu F^N at the top of its load breaks
-  hold.armed = c.m.law == TangentialLaw::asperity && c.mode == Mode::resolved;
-  mode.g = [c, at, force](double t, const detail::State<N>& y) {
-    const double rate = c.breaks_per_time(y[at]);
-    const double change = c.change_per_period(force(t, y), y[at]);
-    // Averaged while sliding fast (rate) and steadily (change); hysteresis, a factor 10
-    // on both, so that the mode cannot chatter.
-    return c.mode == Mode::resolved ? std::max(c.m.dense_breaks - rate, change - dense_change)
-                                    : std::min(rate - 0.1 * c.m.dense_breaks, 10.0 * dense_change - change);
-  };
-  mode.direction = -1;
-  mode.terminal = true;
-  mode.armed = c.m.law == TangentialLaw::asperity;
+  auto mode = detail::make_event<N>(
+      CollisionEvent::mode_change,
+      [c, at, force](double t, const detail::State<N>& y) {
+        const double rate = c.breaks_per_time(y[at]);
+        const double change = c.change_per_period(force(t, y), y[at]);
+        // Averaged while sliding fast (rate) and steadily (change); hysteresis, a factor 10
+        // on both, so that the mode cannot chatter.
+        return c.mode == Mode::resolved ? std::max(c.m.dense_breaks - rate, change - dense_change)
+                                        : std::min(rate - 0.1 * c.m.dense_breaks, 10.0 * dense_change - change);
+      },
+      true, asperity);
   events.push_back(hold);
   events.push_back(mode);
 }
 
-constexpr int break_event = 4, mode_event = 5;
+// After an asperity event the run restarts from the state the break or mode change leaves.
+bool restarts(int id) { return id == detail::id(CollisionEvent::asperity_break) || id == detail::id(CollisionEvent::mode_change); }
+
+// Normal and tangential motion integrated together (BSHP96 (10) beside (13)), in the scaled
+// units of the normal collision: x, v, normal dissipation, z', q, D.
+class Oblique {
+ public:
+  using State = detail::State<6>;
+
+  Oblique(const models::NormalForceModel& model, double mass, double gn, double gt, const TangentialModel& tangential,
+          const NormalCollisionOptions& options)
+      : model_(model), options_(options), gn_(gn), xi0_(model.reference_overlap(gn)), time_unit_(xi0_ / gn),
+        energy_unit_(mass * gn * gn), normal_{&model, xi0_, gn, xi0_ / energy_unit_},
+        cutoff_(model.cutoff_overlap(gn) / xi0_), run_(start_run(tangential, gn, gt, time_unit_, xi0_, 0.0)),
+        y_{cutoff_, 1.0, 0.0, 1.0, 0.0, 0.0},
+        tangential_energy_(0.5 * mass * tangential.kappa * gt * gt) {}
+
+  TangentialCollision run() {
+    while (segment()) {
+    }
+    TangentialCollision out;
+    out.normal.method = "integrate";
+    out.normal.steps = steps_;
+    detail::finish_normal_outcome(out.normal, end_, model_, xi0_, time_unit_, energy_unit_);
+    out.tangential = run_.outcome(force(0.0, y_), tangential_energy_, time_unit_, steps_);
+    return out;
+  }
+
+ private:
+  double force(double, const State& s) const { return model_.force(xi0_ * s[0], gn_ * s[1]) * xi0_ / energy_unit_; }
+
+  // A restart exactly where the contact ends would miss its event (the end function
+  // starts on its far side): the contact has ended if the state says so.
+  bool over() const {
+    if (!end_.compressed) return false;
+    if (options_.end_rule == EndRule::overlap) return y_[0] <= cutoff_;
+    return y_[0] <= 0.0 || model_.force_sign(xi0_ * y_[0], gn_ * y_[1]) <= 0.0;
+  }
+
+  std::vector<detail::Event<6>> events(const TangentialScaled& c) const {
+    auto e = detail::normal_events<6>(model_, options_.end_rule, cutoff_, xi0_, gn_, energy_unit_);
+    if (end_.compressed) {  // resumed after the maximum compression
+      e[detail::id(CollisionEvent::max_compression)].armed = false;
+      e[detail::id(CollisionEvent::end_of_contact)].armed = true;
+    }
+    add_tangential_events<6>(e, c, 3, [this](double t, const State& s) { return force(t, s); });
+    return e;
+  }
+
+  // Integrates to the next event; true when the run goes on (an asperity broke or the
+  // mode changed inside the contact).
+  bool segment() {
+    const TangentialScaled c = run_.c;
+    auto system = [this, c](const State& s, State& dsdt, double) {
+      const double f = normal_(s, dsdt);
+      c(f, s[3], s[4], dsdt[3], dsdt[4], dsdt[5]);
+    };
+    std::vector<detail::Event<6>> e = events(c);
+    IntegrationSettings settings = options_.integration;
+    settings.max_steps = options_.integration.max_steps - steps_;
+    const double step = 1e-3 / std::max(1.0, c.lambda_t * std::abs(y_[3]));
+    const auto result = detail::integrate_until_event<6>(system, y_, t_, step, settings, e);
+    steps_ += result.steps;
+    if (c.mode == Mode::averaged) run_.averaged_time += result.terminal.time - t_;
+    for (const auto& hit : result.hits) {
+      if (hit.id == detail::id(CollisionEvent::max_compression)) {
+        end_.compressed = true;
+        end_.max_overlap = hit.state[0];
+        end_.max_overlap_time = hit.time;
+      }
+    }
+    y_ = result.terminal.state;
+    t_ = result.terminal.time;
+    run_.zp = y_[3];
+    run_.q = y_[4];
+    run_.d = y_[5];
+    const int id = result.terminal.id;
+    if (restarts(id) && !over()) {
+      const double f = force(t_, y_);
+      id == detail::id(CollisionEvent::asperity_break) ? run_.on_break(f) : run_.switch_mode(f);
+      y_[3] = run_.zp;
+      y_[4] = run_.q;
+      y_[5] = run_.d;
+      return true;
+    }
+    end_.time = t_;
+    end_.x = y_[0];
+    end_.v = y_[1];
+    end_.dissipated = y_[2];
+    end_.stuck = id == detail::id(CollisionEvent::sticks);
+    return false;
+  }
+
+  const models::NormalForceModel& model_;
+  const NormalCollisionOptions& options_;
+  double gn_, xi0_, time_unit_, energy_unit_;
+  detail::NormalScaled normal_;
+  double cutoff_;
+  TangentialRun run_;
+  State y_;
+  double t_ = 0.0;
+  double tangential_energy_;
+  detail::NormalEnd end_;
+  long steps_ = 0;
+};
+
+// The normal force of a finished collision: samples, monotone cubic interpolation between
+// them, in scaled units (time unit a third of the contact, speed the impact's).
+struct RecordedForce {
+  double time_unit = 0.0, normal_speed = 0.0, tau_end = 0.0;
+  std::optional<boost::math::interpolators::pchip<std::vector<double>>> force;
+
+  RecordedForce(const std::vector<TrajectorySample>& normal, double mass) {
+    if (normal.size() < 4) throw NumericalError("the normal trajectory has fewer than 4 samples");
+    const double t0 = normal.front().time, t_end = normal.back().time;
+    time_unit = (t_end - t0) / 3.0;
+    normal_speed = std::abs(normal.front().rate);
+    if (!(time_unit > 0.0 && normal_speed > 0.0)) throw NumericalError("the normal trajectory is degenerate");
+    std::vector<double> times, forces;
+    for (const auto& s : normal) {
+      const double tau = (s.time - t0) / time_unit;
+      if (!times.empty() && tau <= times.back()) continue;  // samples at an event can repeat a time
+      times.push_back(tau);
+      forces.push_back((s.elastic_force + s.dissipative_force) * time_unit / (mass * normal_speed));
+    }
+    tau_end = times.back();
+    force.emplace(std::move(times), std::move(forces));
+  }
+  double operator()(double tau) const { return (*force)(std::clamp(tau, 0.0, tau_end)); }
+};
 
 }  // namespace
 
@@ -180,152 +328,31 @@ TangentialCollision integrate_tangential_collision(const models::NormalForceMode
                                                    double normal_speed, double tangential_speed,
                                                    const TangentialModel& tangential,
                                                    const NormalCollisionOptions& options) {
-  require_positive("velocity", normal_speed, "normal impact velocity [m/s]");
-  require_positive("tangential_velocity", tangential_speed, "tangential impact velocity [m/s]");
-  require_positive("effective_mass", effective_mass, "effective mass [kg]");
-  validate(tangential);
-  const double xi0 = model.reference_overlap(normal_speed);
-  const double time_unit = xi0 / normal_speed;
-  const double energy_unit = effective_mass * normal_speed * normal_speed;
-  const detail::NormalScaled normal{&model, xi0, normal_speed, xi0 / energy_unit};
-  const double cutoff = model.cutoff_overlap(normal_speed) / xi0;
-
-  TangentialRun run;
-  run.c.m = tangential;
-  run.c.ratio = normal_speed / tangential_speed;
-  if (tangential.law == TangentialLaw::asperity) {
-    run.c.lambda_t = tangential_speed * time_unit / tangential.asperity_size;
-    run.c.lambda_n = xi0 / tangential.asperity_size;
-  }
-  run.c.gamma_t = tangential.shear_damping * time_unit;
-  if (run.asperity() && run.c.averaging_holds(0.0, 1.0)) run.c.mode = Mode::averaged;  // dense from the start
-
-  using State = detail::State<6>;  // x, v, normal dissipation, z', q, D
-  State y{cutoff, 1.0, 0.0, 1.0, 0.0, 0.0};
-  double t = 0.0;
-  detail::NormalEnd end;
-  long steps = 0;
-  for (;;) {
-    const TangentialScaled c = run.c;
-    auto system = [&normal, c](const State& s, State& dsdt, double) {
-      const double f = normal(s, dsdt);
-      c(f, s[3], s[4], dsdt[3], dsdt[4], dsdt[5]);
-    };
-    auto force = [&model, xi0, normal_speed, energy_unit](double, const State& s) {
-      return model.force(xi0 * s[0], normal_speed * s[1]) * xi0 / energy_unit;
-    };
-    std::vector<detail::Event<6>> events =
-        detail::normal_events<6>(model, options.end_rule, cutoff, xi0, normal_speed, energy_unit);
-    if (end.compressed) {  // resumed after the maximum compression
-      events[0].armed = false;
-      events[1].armed = true;
-    }
-    add_tangential_events<6>(events, c, 3, force);
-    IntegrationSettings settings = options.integration;
-    settings.max_steps = options.integration.max_steps - steps;
-    const double step = 1e-3 / std::max(1.0, c.lambda_t * std::abs(y[3]));
-    const auto result = detail::integrate_until_event<6>(system, y, t, step, settings, events);
-    steps += result.steps;
-    if (c.mode == Mode::averaged) run.averaged_time += result.terminal.time - t;
-    for (const auto& hit : result.hits) {
-      if (hit.index == 0) {
-        end.compressed = true;
-        end.max_overlap = hit.state[0];
-        end.max_overlap_time = hit.time;
-      }
-    }
-    y = result.terminal.state;
-    t = result.terminal.time;
-    run.zp = y[3];
-    run.q = y[4];
-    run.d = y[5];
-    const int index = result.terminal.index;
-    // A restart exactly where the contact ends would miss its event (the end function
-    // starts on its far side): the contact has ended if the state says so.
-    const bool over = end.compressed && (options.end_rule == EndRule::overlap
-                                             ? y[0] <= cutoff
-                                             : y[0] <= 0.0 || model.force_sign(xi0 * y[0], normal_speed * y[1]) <= 0.0);
-    if ((index == break_event || index == mode_event) && !over) {
-      const double f = force(t, y);
-      index == break_event ? run.on_break(f) : run.switch_mode(f);
-      y[3] = run.zp;
-      y[4] = run.q;
-      y[5] = run.d;
-      continue;
-    }
-    end.time = t;
-    end.x = y[0];
-    end.v = y[1];
-    end.dissipated = y[2];
-    end.stuck = index == 3;
-    break;
-  }
-  TangentialCollision out;
-  out.normal.method = "integrate";
-  out.normal.steps = steps;
-  detail::finish_normal_outcome(out.normal, end, model, xi0, time_unit, energy_unit);
-  const double f_end = model.force(xi0 * end.x, normal_speed * end.v) * xi0 / energy_unit;
-  const double tangential_energy = 0.5 * effective_mass * tangential.kappa * tangential_speed * tangential_speed;
-  out.tangential = run.outcome(f_end, tangential_energy, time_unit, steps);
-  return out;
+  return Oblique(model, effective_mass, normal_speed, tangential_speed, tangential, options).run();
 }
 
 TangentialOutcome integrate_tangential_motion(const std::vector<TrajectorySample>& normal, double effective_mass,
                                               double tangential_speed, const TangentialModel& tangential,
                                               const IntegrationSettings& settings) {
-  require_positive("tangential_velocity", tangential_speed, "tangential impact velocity [m/s]");
-  require_positive("effective_mass", effective_mass, "effective mass [kg]");
-  validate(tangential);
-  if (normal.size() < 4) throw NumericalError("the normal trajectory has fewer than 4 samples");
-  // Scaled units from the recording: time unit a third of the contact, speed the impact's.
-  const double t0 = normal.front().time, t_end = normal.back().time;
-  const double time_unit = (t_end - t0) / 3.0;
-  const double normal_speed = std::abs(normal.front().rate);
-  if (!(time_unit > 0.0 && normal_speed > 0.0)) throw NumericalError("the normal trajectory is degenerate");
-  std::vector<double> times, forces;
-  for (const auto& s : normal) {
-    const double tau = (s.time - t0) / time_unit;
-    if (!times.empty() && tau <= times.back()) continue;  // samples at an event can repeat a time
-    times.push_back(tau);
-    forces.push_back((s.elastic_force + s.dissipative_force) * time_unit / (effective_mass * normal_speed));
-  }
-  const double tau_end = times.back();
-  boost::math::interpolators::pchip<std::vector<double>> force_of_time(std::move(times), std::move(forces));
-
-  TangentialRun run;
-  run.c.m = tangential;
-  run.c.ratio = normal_speed / tangential_speed;
-  if (tangential.law == TangentialLaw::asperity) {
-    run.c.lambda_t = tangential_speed * time_unit / tangential.asperity_size;
-    run.c.lambda_n = normal_speed * time_unit / tangential.asperity_size;
-  }
-  run.c.gamma_t = tangential.shear_damping * time_unit;
-  auto f = [&force_of_time, tau_end](double tau) { return force_of_time(std::clamp(tau, 0.0, tau_end)); };
-  if (run.asperity() && run.c.averaging_holds(f(0.0), 1.0)) run.c.mode = Mode::averaged;
-
+  const RecordedForce f(normal, effective_mass);
+  TangentialRun run = start_run(tangential, f.normal_speed, tangential_speed, f.time_unit,
+                                f.normal_speed * f.time_unit, f(0.0));
   using State = detail::State<3>;  // z', q, D
   State y{1.0, 0.0, 0.0};
   double t = 0.0;
   long steps = 0;
   for (;;) {
     const TangentialScaled c = run.c;
-    auto system = [c, f](const State& s, State& dsdt, double tau) { c(f(tau), s[0], s[1], dsdt[0], dsdt[1], dsdt[2]); };
-    // Events 0-3 mirror the coupled integration: only 1 (the end of the recording) is used.
-    std::vector<detail::Event<3>> events(4);
-    for (auto& e : events) {
-      e.g = [](double, const State&) { return 1.0; };
-      e.armed = false;
-    }
-    events[1].g = [tau_end](double tau, const State&) { return tau_end - tau; };
-    events[1].direction = -1;
-    events[1].terminal = true;
-    events[1].armed = true;
-    add_tangential_events<3>(events, c, 0, [f](double tau, const State&) { return f(tau); });
+    auto system = [c, &f](const State& s, State& dsdt, double tau) { c(f(tau), s[0], s[1], dsdt[0], dsdt[1], dsdt[2]); };
+    const double tau_end = f.tau_end;
+    std::vector<detail::Event<3>> events = {detail::make_event<3>(
+        CollisionEvent::end_of_record, [tau_end](double tau, const State&) { return tau_end - tau; }, true, true)};
+    add_tangential_events<3>(events, c, 0, [&f](double tau, const State&) { return f(tau); });
     IntegrationSettings s = settings;
     s.max_steps = settings.max_steps - steps;
     s.max_time = 2.0 * tau_end;
-    const double step = 1e-3 / std::max(1.0, c.lambda_t * std::abs(y[0]));
-    const auto result = detail::integrate_until_event<3>(system, y, t, step, s, events);
+    const auto result = detail::integrate_until_event<3>(system, y, t, 1e-3 / std::max(1.0, c.lambda_t * std::abs(y[0])),
+                                                         s, events);
     steps += result.steps;
     if (c.mode == Mode::averaged) run.averaged_time += result.terminal.time - t;
     y = result.terminal.state;
@@ -333,18 +360,12 @@ TangentialOutcome integrate_tangential_motion(const std::vector<TrajectorySample
     run.zp = y[0];
     run.q = y[1];
     run.d = y[2];
-    const int index = result.terminal.index;
-    if ((index == break_event || index == mode_event) && t < tau_end) {
-      index == break_event ? run.on_break(f(t)) : run.switch_mode(f(t));
-      y[0] = run.zp;
-      y[1] = run.q;
-      y[2] = run.d;
-      continue;
-    }
-    break;
+    if (!restarts(result.terminal.id) || t >= tau_end) break;
+    result.terminal.id == detail::id(CollisionEvent::asperity_break) ? run.on_break(f(t)) : run.switch_mode(f(t));
+    y = {run.zp, run.q, run.d};
   }
   const double tangential_energy = 0.5 * effective_mass * tangential.kappa * tangential_speed * tangential_speed;
-  return run.outcome(f(tau_end), tangential_energy, time_unit, steps);
+  return run.outcome(f(f.tau_end), tangential_energy, f.time_unit, steps);
 }
 
 }  // namespace bounce::dynamics

@@ -187,6 +187,12 @@ Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
   m.name = row.name;
   m.capabilities = row.capabilities;
   m.end_rule = parse_end_rule(p.text("contact_end"));
+  if (m.capabilities.adhesive && m.end_rule == EndRule::force) {
+    throw InvalidArgument("contact_end", "force",
+                          fmt::format("overlap for model {} (an adhesive contact ends where it breaks, not where the "
+                                      "force first vanishes)",
+                                      row.name));
+  }
   m.yield_strength = p.real("yield");
   m.tangential = tangential_model(pair, p);
   return m;

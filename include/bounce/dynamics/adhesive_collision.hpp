@@ -13,7 +13,7 @@ struct AdhesiveCollisionOptions {
   /// dopri5 (jkr-viscoelastic). With RODAS, 1e-8 gives COR errors <= 5e-9 for
   /// T_vis 1e-16 to 1e-8 s (docs/benchmarks.md).
   double relative_tolerance = 1e-8;
-  long max_steps = 2'000'000;  ///< ~4 s of CVODE steps: fail fast rather than stall
+  long max_steps = 2'000'000;  ///< ~1-5 s of stiff-engine steps: fail fast rather than stall
   bool record_trajectory = false;
   int trajectory_points = 600;       ///< evenly spaced samples over ~2 Hertz contact times (plus every step)
   /// Keep integrating a sticking collision until this time [s] (trajectories of
@@ -25,14 +25,17 @@ struct AdhesiveCollisionOptions {
   StiffEngine engine = StiffEngine::rodas;  ///< krijt only (jkr-viscoelastic is not stiff)
 };
 
-/// K13: delta, delta', a and the two dissipations integrated with CVODE (BDF,
-/// analytic Jacobian). Ends when beta reaches its upper bound 1/k (the crack runs
+/// K13: delta, delta', a and the two dissipations integrated by the stiff engine (RODAS,
+/// or CVODE's BDF; both with the analytic Jacobian). Ends when beta reaches its upper bound 1/k (the crack runs
 /// away: a -> 0 with a' -> -inf in no time; the energy U_E + U_S left then is
 /// crack dissipation) or when the mechanical energy U_K + U_E + U_S turns negative
 /// (it never increases, so the grains can never separate: stick).
 CollisionOutcome integrate_krijt_collision(const models::KrijtParameters& p, double speed,
                                            const AdhesiveCollisionOptions& options = {});
 
+/// Preconditions of both (checked once, by the model registry and analysis::collide):
+/// parameters of models::make_model, speed > 0 and finite.
+///
 /// The same equations with a on the JKR equilibrium (beta = 1, an instantaneous
 /// crack) plus the bulk force (19): snap-on to the JKR radius at delta = 0, release
 /// at the JKR separation overlap delta_c. Integrated with dopri5 (not stiff).

@@ -22,8 +22,8 @@ struct IntegrationSettings {
 };
 
 /// The engine of stiff models (docs/benchmarks.md): our RODAS (Rosenbrock, order 4,
-/// the default: 4-5x faster than CVODE on bounce's small systems) or SUNDIALS CVODE
-/// (BDF; kept as the independent cross-check).
+/// the default: 2-3x faster than CVODE per K13 collision at equal accuracy on bounce's
+/// small systems) or SUNDIALS CVODE (BDF; kept as the independent cross-check).
 enum class StiffEngine { rodas, cvode };
 
 /// The step budget ran out before the collision ended.

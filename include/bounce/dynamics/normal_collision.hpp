@@ -19,6 +19,9 @@ struct NormalCollisionOptions {
 /// Integrates in the scaled units of BP04 (8.66) (xi0 of (8.65), time xi0/g), so
 /// tolerances are dimensionless; events (maximum compression, end of contact) are
 /// located on the dense output. The COR is e = -xi'(t_c)/g (BP04 (8.62)).
+/// Preconditions (checked once, where the inputs come in: analysis::collide and the model
+/// registry): speed and effective_mass > 0 and finite, a validated force law; an adhesive
+/// law only with the overlap end rule.
 CollisionOutcome integrate_normal_collision(const models::NormalForceModel& model,
                                             double effective_mass, double speed,
                                             const NormalCollisionOptions& options = {});

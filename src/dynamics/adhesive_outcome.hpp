@@ -1,0 +1,38 @@
+#pragma once
+// Private: what the two adhesive engines (krijt_collision.cpp, jkr_viscoelastic_collision.cpp)
+// share: how a collision ends, in energy and outcome.
+
+#include "bounce/contact/independent.hpp"
+#include "bounce/dynamics/outcome.hpp"
+#include "bounce/models/krijt.hpp"
+#include "krijt_system.hpp"
+
+namespace bounce::dynamics::detail {
+
+inline constexpr const char* before_max_compression_note =
+    "sticking was certain before the maximum compression: max_overlap is the overlap at that time (--follow "
+    "integrates the settling)";
+
+/// The end of an adhesive collision with contact radius a, approach delta and scaled rate
+/// v = delta'/g (the bulk and crack dissipation already in out.energy). A break releases
+/// what U_E + U_S held at the crack (the run-away to a = 0 is instantaneous, K13 (C.2)):
+/// e = -v; sticking grains keep U_E and U_S.
+inline void finish_adhesive(CollisionOutcome& out, const models::KrijtParameters& p, const Scales& s, double v,
+                            double a, double delta, bool bounced) {
+  EnergyBudget& e = out.energy;
+  e.initial_kinetic = s.energy;
+  e.final_kinetic = s.energy * v * v;  // for sticking: the kinetic energy at the end
+  if (bounced) {
+    out.outcome = Outcome::bounce;
+    out.cor = -v;
+    e.crack_dissipated += models::contact_energy(p, a, delta);
+  } else {
+    out.outcome = Outcome::stick;
+    out.cor = 0.0;
+    e.elastic_remaining = contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta);
+    e.surface_remaining = contact::independent::surface_energy(a, p.surface_energy);
+  }
+  e.close();
+}
+
+}  // namespace bounce::dynamics::detail

@@ -1,0 +1,204 @@
+// `jkr-viscoelastic`: K13's equations with the contact radius held on the JKR equilibrium
+// (an instantaneous crack, beta = 1) plus the bulk force (19). Not stiff: integrated with
+// dopri5 (event_integrator.hpp).
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "adhesive_outcome.hpp"
+#include "bounce/contact/jkr.hpp"
+#include "bounce/dynamics/adhesive_collision.hpp"
+#include "event_integrator.hpp"
+#include "krijt_system.hpp"
+
+namespace bounce::dynamics {
+
+namespace {
+
+using detail::Scales;
+using State = detail::State<3>;  // delta / L, rate / g, bulk dissipation / E0
+
+// Contact radius on the JKR branch stable under displacement control, a >= a_c:
+// with u = sqrt(a), K13 (8) is u^4 - c R u - R delta = 0, c = sqrt(2 pi gamma / E*);
+// Newton from above converges monotonically (the quartic is convex for u > u_c).
+class JkrBranch {
+ public:
+  explicit JkrBranch(const models::KrijtParameters& p)
+      : r_(p.effective_radius), c_(std::sqrt(2.0 * detail::pi * p.surface_energy / p.effective_modulus)),
+        u_fold_(std::cbrt(c_ * r_ / 4.0)) {}
+
+  double radius(double delta) const {
+    const double cr = c_ * r_;
+    auto h = [&](double u) { return u * u * u * u - cr * u - r_ * delta; };
+    double u = std::max(2.0 * u_fold_, std::sqrt(std::sqrt(std::max(2.0 * r_ * delta, 0.0))));
+    while (h(u) < 0.0) u *= 2.0;
+    for (int i = 0; i < 60; ++i) {
+      const double step = h(u) / (4.0 * u * u * u - cr);
+      u -= step;
+      if (u <= u_fold_) {
+        u = u_fold_;
+        break;
+      }
+      if (std::abs(step) <= 1e-16 * u) break;
+    }
+    return u * u;
+  }
+
+ private:
+  double r_, c_, u_fold_;
+};
+
+// The events of the collision (their ids).
+enum JkrEvent : int { max_compression, release, sticks };
+
+class JkrViscoelastic {
+ public:
+  JkrViscoelastic(const models::KrijtParameters& p, double speed, const AdhesiveCollisionOptions& options);
+  CollisionOutcome run();
+  // The system: K13 (20) with a on the JKR curve, and the bulk dissipation K13 (C.3).
+  void operator()(const State& y, State& dydt, double) const;
+
+ private:
+  // (U_K + U_E + U_S) minus its value at the fold: below 0 the grains can never separate.
+  double mechanical_minus_release(const State& y) const;
+  std::vector<detail::Event<3>> events() const;
+  TrajectorySample sample(double t, const State& y) const;
+  detail::IntegrationResult<3> integrate();
+  void finish(const detail::IntegrationResult<3>& result);
+
+  const models::KrijtParameters& p_;
+  const AdhesiveCollisionOptions& options_;
+  const Scales s_;
+  const JkrBranch branch_;
+  const double delta_c_, snap_release_, release_energy_, t_hertz_;
+  const bool follow_;
+  CollisionOutcome out_;
+  bool followed_to_end_ = false;
+};
+
+JkrViscoelastic::JkrViscoelastic(const models::KrijtParameters& p, double speed, const AdhesiveCollisionOptions& options)
+    : p_(p), options_(options), s_(detail::scales_for(p, speed)), branch_(p),
+      delta_c_(contact::jkr::separation_overlap({p.effective_radius, p.effective_modulus, p.surface_energy})),
+      // Snap-on at delta = 0: a jumps from 0 to the JKR radius; -(U_E + U_S) is released (crack).
+      snap_release_(-models::contact_energy(
+          p, contact::jkr::snap_on_contact_radius({p.effective_radius, p.effective_modulus, p.surface_energy}), 0.0)),
+      // Release needs U_E + U_S = U(a_c, delta_c) > 0 at the fold; the mechanical energy
+      // never increases, so once it is below that the grains can never separate.
+      release_energy_(models::contact_energy(p, branch_.radius(delta_c_), delta_c_) / s_.energy),
+      t_hertz_(detail::scaled_hertz_time(p, speed, s_)), follow_(options.follow_time > 0.0) {
+  out_.method = "integrate";
+}
+
+void JkrViscoelastic::operator()(const State& y, State& dydt, double) const {
+  const double delta = y[0] * s_.length, rate = y[1] * s_.speed;
+  const double a = branch_.radius(delta);
+  const double fd = models::bulk_dissipative_force(p_, a, rate);
+  const double force = models::elastic_force(p_, a, delta) + fd;
+  dydt[0] = y[1];
+  dydt[1] = -force / p_.effective_mass * s_.time / s_.speed;  // K13 (20) with a on the JKR curve
+  dydt[2] = fd * rate * s_.time / s_.energy;                  // K13 (C.3)
+}
+
+double JkrViscoelastic::mechanical_minus_release(const State& y) const {
+  const double delta = y[0] * s_.length;
+  return y[1] * y[1] + models::contact_energy(p_, branch_.radius(delta), delta) / s_.energy - release_energy_;
+}
+
+std::vector<detail::Event<3>> JkrViscoelastic::events() const {
+  std::vector<detail::Event<3>> e(3);
+  e[0] = {max_compression, [](double, const State& y) { return y[1]; }, -1, false, true, -1};
+  e[1] = {release, [this](double, const State& y) { return y[0] - delta_c_ / s_.length; }, -1, true, true, -1};
+  e[2] = {sticks, [this](double, const State& y) { return mechanical_minus_release(y); }, -1, !follow_, true, -1};
+  return e;
+}
+
+TrajectorySample JkrViscoelastic::sample(double t, const State& y) const {
+  TrajectorySample x;
+  x.time = t * s_.time;
+  x.overlap = y[0] * s_.length;
+  x.rate = y[1] * s_.speed;
+  x.contact_radius = branch_.radius(x.overlap);
+  x.elastic_force = models::elastic_force(p_, x.contact_radius, x.overlap);
+  x.dissipative_force = models::bulk_dissipative_force(p_, x.contact_radius, x.rate);
+  x.effective_surface_energy_ratio = 1.0;
+  x.kinetic = 0.5 * p_.effective_mass * x.rate * x.rate;
+  x.elastic = contact::independent::elastic_energy({p_.effective_radius, p_.effective_modulus}, x.contact_radius, x.overlap);
+  x.surface = contact::independent::surface_energy(x.contact_radius, p_.surface_energy);
+  x.crack_dissipated = snap_release_;
+  x.bulk_dissipated = y[2] * s_.energy;
+  return x;
+}
+
+detail::IntegrationResult<3> JkrViscoelastic::integrate() {
+  IntegrationSettings settings;
+  settings.relative_tolerance = settings.absolute_tolerance = options_.relative_tolerance * 1e-2;
+  settings.max_steps = options_.max_steps;
+  settings.max_time = follow_ ? options_.follow_time / s_.time : 1e4 * t_hertz_;
+  const double spacing = 2.0 * t_hertz_ / std::max(options_.trajectory_points, 1);
+  double next_sample = 0.0;
+  const detail::StepObserver<3> observer = [&](double t0, double t1, const auto& at) {
+    for (; next_sample <= t1; next_sample += spacing) {
+      if (next_sample >= t0) out_.trajectory.push_back(sample(next_sample, at(next_sample)));
+    }
+  };
+  const State start{0.0, 1.0, 0.0};
+  if (options_.record_trajectory) out_.trajectory.push_back(sample(0.0, start));
+  detail::IntegrationResult<3> result;
+  if (!follow_ && mechanical_minus_release(start) <= 0.0) {
+    result.terminal = {sticks, 0.0, start};  // bound from the snap-on on
+    return result;
+  }
+  auto e = events();
+  try {
+    return detail::integrate_until_event<3>(*this, start, 0.0, 1e-4 * t_hertz_, settings, e,
+                                            options_.record_trajectory ? &observer : nullptr);
+  } catch (const TimeBudgetExceeded&) {
+    if (!follow_) throw;
+    followed_to_end_ = true;
+  }
+  return result;
+}
+
+void JkrViscoelastic::finish(const detail::IntegrationResult<3>& result) {
+  const auto& last = out_.trajectory;
+  const State end = followed_to_end_ && !last.empty()
+                        ? State{last.back().overlap / s_.length, last.back().rate / s_.speed,
+                                last.back().bulk_dissipated / s_.energy}
+                        : result.terminal.state;
+  for (const auto& hit : result.hits) {
+    if (hit.id == max_compression) {
+      out_.max_overlap = hit.state[0] * s_.length;
+      out_.time_of_max_overlap = hit.time * s_.time;
+    }
+  }
+  out_.steps = result.steps;
+  out_.contact_time = followed_to_end_ ? options_.follow_time : result.terminal.time * s_.time;
+  if (result.hits.empty() && !followed_to_end_) {  // stopped before the maximum compression
+    out_.max_overlap = std::max(end[0], 0.0) * s_.length;
+    out_.time_of_max_overlap = result.terminal.time * s_.time;
+    out_.notes.push_back(detail::before_max_compression_note);
+  }
+  const bool bounced = !followed_to_end_ && result.terminal.id == release;
+  out_.energy.bulk_dissipated = end[2] * s_.energy;
+  out_.energy.crack_dissipated = snap_release_;
+  // Release at the fold: a drops to 0 at delta_c, U_E + U_S there is dissipated.
+  const double delta = bounced ? delta_c_ : end[0] * s_.length;
+  detail::finish_adhesive(out_, p_, s_, end[1], branch_.radius(delta), delta, bounced);
+  if (options_.record_trajectory && !out_.trajectory.empty() && bounced) {
+    out_.trajectory.back().crack_dissipated = out_.energy.crack_dissipated;
+  }
+}
+
+CollisionOutcome JkrViscoelastic::run() {
+  finish(integrate());
+  return std::move(out_);
+}
+
+}  // namespace
+
+CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParameters& p, double speed,
+                                                      const AdhesiveCollisionOptions& options) {
+  return JkrViscoelastic(p, speed, options).run();
+}
+
+}  // namespace bounce::dynamics
