@@ -9,8 +9,12 @@ out. A tour is in docs/python.md::
     bounce.collide(pair, model, 8.0)["cor"]
     bounce.collide(pair, model, np.geomspace(0.1, 100, 50))["cor"]   # an array, no Python loop
 
+The parameters are those of the command line (`bounce models` / bounce.models() lists each
+model's), as keywords: bounce.Model("power-law", power_d1=..., power_d2=...). Results are
+dicts with the keys of the CLI's JSON.
+
 Errors: bad input raises ValueError naming the parameter, its value and the allowed
-range; a numerical failure raises RuntimeError.
+range (TypeError for a value of the wrong type); a numerical failure raises RuntimeError.
 """
 
 from ._bounce import (  # noqa: F401
@@ -29,6 +33,9 @@ from ._bounce import (  # noqa: F401
     master_cor,
     material,
     material_names,
+    materials,
+    models,
+    sticking,
     sticking_velocity,
     viscoelastic_scales,
 )
@@ -39,7 +46,7 @@ def curve(pair: Pair, model: Model, velocities, **options):
     """The COR curve over an array of impact speeds [m/s] (the CLI's `bounce curve`).
 
     The same as ``collide(pair, model, numpy.asarray(velocities, float), **options)``: a dict
-    of arrays (velocity, cor, stick, contact_time, max_overlap, bulk_dissipated,
+    of arrays (velocity, cor, outcome, stick, contact_time, max_overlap, bulk_dissipated,
     crack_dissipated; cor_tangential with a tangential_velocity), the loop in C++.
     """
     import numpy as np
@@ -64,6 +71,9 @@ __all__ = [
     "master_cor",
     "material",
     "material_names",
+    "materials",
+    "models",
+    "sticking",
     "sticking_velocity",
     "viscoelastic_scales",
 ]

@@ -32,8 +32,8 @@ void check(const Case& c, const analysis::ViscoelasticScales& s) {
                           "A > 0 s (with A = 0 the collision is elastic: e = 1)");
   }
   detail::refuse_given(c.model_parameters, std::array{"contact_end", "yield", "method", "tolerance"},
-                       "nothing that analytic does not use: it gives both end rules, without plastic losses");
-  detail::refuse_given(c.model_parameters, detail::tangential_names, "nothing tangential: BP04's forms are head-on");
+                       "none with analytic: it gives both end rules, without plastic losses");
+  detail::refuse_given(c.model_parameters, detail::tangential_names, "none with analytic: BP04's forms are head-on");
 }
 
 Record series_values(double k, double q) {

@@ -259,8 +259,7 @@ Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
 
 void refuse_given(const Parameters& p, std::span<const char* const> names, std::string_view why) {
   for (const char* name : names) {
-    const auto it = p.values().find(name);
-    if (it != p.values().end()) throw InvalidArgument(name, value_text(it->second), std::string(why));
+    if (p.given(name)) throw InvalidArgument(name, p.typed(name), std::string(why));
   }
 }
 

@@ -52,7 +52,7 @@ Record contact(const Inputs& inputs) {
   detail::refuse_given(c.own, ranges, "a CSV curve (contact_curve): one state takes force or overlap");
   detail::refuse_given(c.own, std::array{"log"}, "a range (forces, overlaps or contact_radii) to space");
   if (c.own.given("force") && c.own.given("overlap")) {
-    throw InvalidArgument("force", value_text(c.own.values().find("force")->second), "force or overlap, not both");
+    throw InvalidArgument("force", c.own.typed("force"), "force or overlap, not both");
   }
   const contact::ContactPoint p =
       c.own.given("overlap") ? c.law->at_overlap(*c.own.real("overlap")) : c.law->at_force(*c.own.real("force"));

@@ -39,31 +39,30 @@ Record sticking_record(const Case& c) {
   return j;
 }
 
-void check_head_on(const Case& c) {
-  detail::refuse_given(c.model_parameters, detail::tangential_names,
-                       "nothing tangential: the sticking velocity is that of head-on collisions");
+// Checked before the model is built (which would ask for the rest of the tangential law).
+void check_head_on(const detail::Bound& b) {
+  detail::refuse_given(b.model_parameters, detail::tangential_names,
+                       "none with sticking: the sticking velocity is that of head-on collisions");
 }
 
 }  // namespace
 
 Record sticking(const Inputs& inputs, const Progress&) {
-  const Case c = make_case("sticking", inputs);
-  check_head_on(c);
-  detail::refuse_given(c.own, std::array{"log"}, "radii with it (log spaces the radii)");
-  if (c.own.given("radii")) {
-    throw InvalidArgument("radii", c.own.text("radii"), "none for one sticking velocity (sticking_over_radii)");
-  }
-  return sticking_record(c);
+  const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
+  check_head_on(bound);
+  detail::refuse_given(bound.own, std::array{"log"}, "radii with it (log spaces the radii)");
+  detail::refuse_given(bound.own, std::array{"radii"}, "none for one sticking velocity (sticking_over_radii)");
+  return sticking_record(detail::make_case(bound));
 }
 
 Value sticking_over_radii(const Inputs& inputs, const Progress& progress) {
   const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
+  check_head_on(bound);
   const auto radii = detail::parse_range("radii", bound.own.text("radii"), bound.own.flag("log"));
   if (radii.front() <= 0.0) throw InvalidArgument("radii", bound.own.text("radii"), "radii > 0 m (LO > 0)");
   Value::List rows;
   for (std::size_t i = 0; i < radii.size(); ++i) {
     const Case c = detail::make_case(bound, radii[i]);
-    if (i == 0) check_head_on(c);
     Record j;
     try {
       j = sticking_record(c);

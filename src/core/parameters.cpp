@@ -73,8 +73,9 @@ std::string choice_list(const std::vector<std::string>& choices) {
   return fmt::format("{} or {}", fmt::join(head, ", "), choices.back());
 }
 
-double checked_real(const ParameterSpec& spec, double x) {
-  if (!spec.range.contains(x)) throw InvalidArgument(spec.name, format_value(x), spec.range.describe(spec.what()));
+// `shown`: the value as the user typed it.
+double checked_real(const ParameterSpec& spec, double x, const std::string& shown) {
+  if (!spec.range.contains(x)) throw InvalidArgument(spec.name, shown, spec.range.describe(spec.what()));
   return x;
 }
 
@@ -100,8 +101,8 @@ ParameterValue checked(const ParameterSpec& spec, const ParameterValue& value) {
   const auto* text = std::get_if<std::string>(&value);
   switch (spec.kind) {
     case ParameterKind::real: {
-      if (const auto* x = std::get_if<double>(&value)) return checked_real(spec, *x);
-      if (text) return checked_real(spec, parse_real(spec.name, *text, spec.range.infinite));
+      if (const auto* x = std::get_if<double>(&value)) return checked_real(spec, *x, format_value(*x));
+      if (text) return checked_real(spec, parse_real(spec.name, *text, spec.range.infinite), *text);
       throw InvalidArgument(spec.name, value_text(value), "a number");
     }
     case ParameterKind::reals: {
@@ -148,6 +149,7 @@ Parameters bind_parameters(std::span<const ParameterSpec> specs, const Parameter
                             fmt::format("a parameter of {}: one of {}", owner, fmt::join(names, ", ")));
     }
     p.values_.emplace(name, checked(*spec, value));
+    p.typed_.emplace(name, value);
   }
   return p;
 }
@@ -172,6 +174,11 @@ const ParameterValue* value_or_default(const Parameters& p, std::string_view nam
 }  // namespace
 
 bool Parameters::given(std::string_view name) const { return values_.find(name) != values_.end(); }
+
+std::string Parameters::typed(std::string_view name) const {
+  const auto it = typed_.find(name);
+  return it == typed_.end() ? std::string() : value_text(it->second);
+}
 
 std::optional<double> Parameters::real(std::string_view name) const {
   const ParameterValue* v = value_or_default(*this, name);

@@ -25,7 +25,7 @@ double from_viscosities(const Pair& pair, const Parameters& p) {
   const Material& m1 = pair.body1().material;
   const Material& m2 = pair.body2().material;
   if (!pair.body2().rigid && (m1.youngs_modulus != m2.youngs_modulus || m1.poisson_ratio != m2.poisson_ratio)) {
-    throw InvalidArgument("eta1", format_value(eta1),
+    throw InvalidArgument("eta1", p.typed("eta1"),
                           "viscosities only for bodies of one material (BP04 (8.38)); give A for unlike pairs");
   }
   if (m1.poisson_ratio <= 0.0) {
@@ -43,7 +43,7 @@ double dissipative_constant(const Pair& pair, const Parameters& p, std::string_v
     for (const char* name : {"eta1", "eta2"}) {
       if (a && p.given(name)) second = name;
     }
-    throw InvalidArgument(second, value_text(p.values().find(second)->second),
+    throw InvalidArgument(second, p.typed(second),
                           "one of A, the viscosities eta1 and eta2, or T_vis, not two");
   }
   if (a) return *p.real("A");

@@ -94,7 +94,7 @@ Body second_body(const Parameters& p, const Material& m2, const Body& b1) {
   if (wall || rigid) {
     for (const char* name : {"radius2", "inertia2"}) {
       if (p.given(name)) {
-        throw InvalidArgument(name, value_text(p.values().find(name)->second), "none with a wall (a wall is flat)");
+        throw InvalidArgument(name, p.typed(name), "none with a wall (a wall is flat)");
       }
     }
     return rigid ? rigid_wall(m2) : bounce::wall(m2);

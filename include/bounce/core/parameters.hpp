@@ -92,6 +92,8 @@ class Parameters {
 
   /// Every value given, validated and converted (text read as numbers where declared so).
   const ParameterInputs& values() const noexcept { return values_; }
+  /// A value as the user typed it (for messages: "1e-3", not "0.001"); "" if not given.
+  std::string typed(std::string_view name) const;
   /// The specs these values were checked against.
   const std::vector<ParameterSpec>& specs() const noexcept { return specs_; }
   const ParameterSpec* spec(std::string_view name) const;
@@ -100,6 +102,7 @@ class Parameters {
   friend Parameters bind_parameters(std::span<const ParameterSpec>, const ParameterInputs&, std::string_view);
   std::vector<ParameterSpec> specs_;
   ParameterInputs values_;
+  ParameterInputs typed_;  // as given, before conversion
 };
 
 /// Checks every input against the spec of its name: its kind (text is read as a number,

@@ -111,7 +111,7 @@ TEST(CliCollide, BadInput) {
   expect_rejected(command("collide", ice({"--velocity", "nan"})), "--velocity", "nan");
   expect_rejected(command("collide", ice({})), "--velocity", "(not given)");
   expect_rejected({"collide", "--material", "ice-bshp96", "--radius", "0.01", "--A", "-1e-6", "--velocity", "1"},
-                  "--A", "-1e-06");
+                  "--A", "-1e-6");
   expect_rejected({"collide", "--material", "ice-bshp96", "--radius", "0.01", "--velocity", "1"}, "--A",
                   "(not given)");
   expect_rejected(command("collide", ice({"--velocity", "1", "--model", "rubbery"})), "--model", "rubbery");

@@ -110,7 +110,7 @@ TEST(CliContact, BadInputEachCase) {
   expect_rejected(with({"contact"}, with(ice, {"--nu2", "-1"})), "--nu2", "-1");
   expect_rejected(with({"contact"}, with(ice, {"--density", "0"})), "--density", "0");
   expect_rejected(with({"contact"}, with(ice, {"--density2", "-3"})), "--density2", "-3");
-  expect_rejected({"contact", "--material", "water-ice", "--radius", "-1e-6"}, "--radius", "-1e-06");
+  expect_rejected({"contact", "--material", "water-ice", "--radius", "-1e-6"}, "--radius", "-1e-6");
   expect_rejected({"contact", "--material", "water-ice", "--radius", "inf"}, "--radius", "inf");
   expect_rejected(with({"contact"}, with(ice, {"--radius2", "0"})), "--radius2", "0");
   expect_rejected(with({"contact"}, with(ice, {"--gamma", "-0.1", "--law", "jkr"})), "--gamma", "-0.1");

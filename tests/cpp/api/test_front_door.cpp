@@ -1,0 +1,165 @@
+// The front door (api/front_door.hpp) and the model registry behind it: a model added as
+// one row works through the front door with no other edit; every input a model or a
+// command does not take is refused, naming it.
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "bounce/api/front_door.hpp"
+#include "bounce/contact/hertz.hpp"
+#include "bounce/core/error.hpp"
+#include "bounce/models/registry.hpp"
+
+using namespace bounce;
+
+namespace {
+
+// A toy normal force for the test only: the linear spring-dashpot F = k xi + c xi'
+// (Cundall & Strack's normal law), whose COR under the overlap end rule is exact:
+// e = exp(-pi zeta / sqrt(1 - zeta^2)), zeta = c / (2 sqrt(k m)).
+class LinearSpring final : public models::NormalForceModel {
+ public:
+  LinearSpring(double k, double c, double m, double r) : k_(k), c_(c), m_(m), r_(r) {}
+  std::string_view name() const override { return "test-linear-spring"; }
+  double force(double xi, double rate) const override { return xi <= 0.0 ? 0.0 : k_ * xi + c_ * rate; }
+  double elastic_force(double xi) const override { return xi <= 0.0 ? 0.0 : k_ * xi; }
+  double elastic_energy(double xi) const override { return xi <= 0.0 ? 0.0 : 0.5 * k_ * xi * xi; }
+  double contact_radius(double xi) const override { return contact::hertz::contact_radius(r_, xi); }
+  double reference_overlap(double speed) const override { return speed * std::sqrt(m_ / k_); }  // (1/2) k xi0^2 = (1/2) m g^2
+
+ private:
+  double k_, c_, m_, r_;
+};
+
+ParameterSpec real(const char* name, const char* quantity, const char* unit, Range range) {
+  ParameterSpec s;
+  s.name = name;
+  s.quantity = quantity;
+  s.unit = unit;
+  s.range = range;
+  s.help = std::string(quantity) + " [" + unit + "]";
+  return s;
+}
+
+// The one row: keyword, summary, references, capabilities, parameters, factory.
+const models::ModelRow& register_toy() {
+  static const models::ModelRow& row = models::model_registry().add(models::ModelRow{
+      "test-linear-spring", "linear spring-dashpot (test only)", "Cundall & Strack (1979)", models::Capabilities{},
+      {real("stiffness", "spring stiffness k", "N/m", positive()), real("damping", "dashpot c", "N s/m", non_negative())},
+      [](const Pair& pair, const Parameters& p) {
+        models::Model m;
+        m.force = std::make_shared<LinearSpring>(p.require_real("stiffness", "a stiffness k > 0 N/m"),
+                                                 p.real("damping").value_or(0.0), pair.effective_mass(),
+                                                 pair.effective_radius());
+        m.adhesion = models::Adhesion::unchecked;
+        return m;
+      }});
+  return row;
+}
+
+api::Inputs steel(api::Inputs more) {
+  more.insert({{"material", std::string("steel")}, {"radius", 1e-3}});
+  return more;
+}
+
+}  // namespace
+
+// Acceptance (issue 12): a toy normal-force model registered as one row (in this test
+// binary only) collides through the front door, with no other edit, and its COR is the
+// exact one of a damped linear oscillator to the integration tolerance (1e-12: the
+// default tolerance of direct integration, in the scaled units).
+TEST(FrontDoor, ToyModelAddedAsOneRow) {
+  const auto& row = register_toy();
+  EXPECT_EQ(row.name, "test-linear-spring");
+  const Pair pair = api::make_pair(steel({}));
+  const double k = 1e6, m = pair.effective_mass(), c = 0.2 * 2.0 * std::sqrt(k * m);  // zeta = 0.2
+  const Record r = api::collide(steel({{"model", std::string("test-linear-spring")}, {"stiffness", k}, {"damping", c},
+                                       {"velocity", 0.5}}));
+  const double zeta = 0.2, exact = std::exp(-std::numbers::pi * zeta / std::sqrt(1.0 - zeta * zeta));
+  EXPECT_NEAR(r.at("cor").number(), exact, 1e-10);
+  EXPECT_EQ(r.at("model").text(), "test-linear-spring");
+  EXPECT_EQ(r.at("method").text(), "integrate");
+  EXPECT_NEAR(r.at("contact_time").number(), std::numbers::pi / std::sqrt(k / m * (1.0 - zeta * zeta)), 1e-12);
+  // The shared parameters come with the row: an oblique collision, plastic losses.
+  const Record oblique = api::collide(steel({{"model", std::string("test-linear-spring")}, {"stiffness", k},
+                                             {"velocity", 0.5}, {"tangential_velocity", 0.1}, {"friction", 0.3},
+                                             {"asperity", 1e-7}}));
+  EXPECT_TRUE(oblique.contains("cor_tangential"));
+  // Its parameters are checked like any other: a foreign one is refused, a bad value too.
+  EXPECT_THROW(api::collide(steel({{"model", std::string("test-linear-spring")}, {"stiffness", k}, {"A", 1e-6},
+                                   {"velocity", 0.5}})),
+               InvalidArgument);
+  EXPECT_THROW(api::collide(steel({{"model", std::string("test-linear-spring")}, {"stiffness", -1.0},
+                                   {"velocity", 0.5}})),
+               InvalidArgument);
+  // A keyword is taken once.
+  EXPECT_THROW(models::model_registry().add(row), InvalidArgument);
+}
+
+// Every model refuses a parameter that only other models take, naming it and the models
+// that take it; the front door's listing of each model is what its row declares.
+TEST(FrontDoor, EachModelRefusesWhatItDoesNotTake) {
+  std::set<std::string> all;
+  for (const auto& row : models::model_registry().rows()) {
+    for (const auto& s : row.parameters) all.insert(s.name);
+  }
+  for (const auto& row : models::model_registry().rows()) {
+    std::set<std::string> own;
+    for (const auto& s : row.parameters) own.insert(s.name);
+    int refused = 0;
+    for (const auto& name : all) {
+      if (own.count(name)) continue;
+      try {
+        api::collide(steel({{"model", row.name}, {name, 1.0}, {"velocity", 1.0}}));
+        ADD_FAILURE() << row.name << " took " << name;
+      } catch (const InvalidArgument& e) {
+        EXPECT_EQ(e.parameter(), name) << e.what();
+        EXPECT_NE(e.allowed().find("no " + name + " with model " + row.name), std::string::npos) << e.what();
+        ++refused;
+      }
+    }
+    EXPECT_GT(refused, 0) << row.name;
+  }
+}
+
+// Inputs of another command, and inputs nobody takes, are refused with the same rule.
+TEST(FrontDoor, CommandsRefuseForeignInputs) {
+  try {
+    api::collide(steel({{"A", 1e-7}, {"velocity", 1.0}, {"velocities", std::string("1:2:3")}}));
+    ADD_FAILURE();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "velocities");
+    EXPECT_NE(e.allowed().find("bounce curve"), std::string::npos) << e.what();
+  }
+  try {
+    api::collide(steel({{"A", 1e-7}, {"velocity", 1.0}, {"nonsense", 1.0}}));
+    ADD_FAILURE();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "nonsense");
+  }
+  // The tangential law without a tangential velocity is unused in a head-on collision.
+  EXPECT_THROW(api::collide(steel({{"A", 1e-7}, {"velocity", 1.0}, {"friction", 0.3}, {"asperity", 1e-7}})),
+               InvalidArgument);
+  // A follow time is for the models that integrate the settling.
+  EXPECT_THROW(api::collide(steel({{"A", 1e-7}, {"velocity", 1.0}, {"follow", 1e-3}})), InvalidArgument);
+  // Numerical settings of another engine.
+  EXPECT_THROW(api::collide(steel({{"A", 1e-7}, {"velocity", 1.0}, {"stiff_engine", std::string("cvode")}})),
+               InvalidArgument);
+}
+
+// The Records carry the CLI's JSON keys (docs/cli.md).
+TEST(FrontDoor, CollideRecordKeys) {
+  const Record r = api::collide(steel({{"A", 1e-7}, {"velocity", 1.0}}));
+  for (const char* key : {"cor", "outcome", "contact_time", "max_overlap", "time_of_max_overlap", "method", "steps",
+                          "energy", "warnings", "notes", "model", "contact_end", "velocity", "kappa", "pair"}) {
+    EXPECT_TRUE(r.contains(key)) << key;
+  }
+  for (const char* key : {"initial_kinetic", "final_kinetic", "bulk_dissipated", "crack_dissipated",
+                          "plastic_dissipated", "elastic_remaining", "surface_remaining", "closure_error"}) {
+    EXPECT_TRUE(r.at("energy").record().contains(key)) << key;
+  }
+}

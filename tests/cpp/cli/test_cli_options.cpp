@@ -1,0 +1,95 @@
+// The CLI's options come from the registry (issue 12): every model's options are there,
+// and every option a chosen model or command does not use is refused with exit 2 naming
+// it (the one-line rule), for each model.
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/run_cli.hpp"
+
+using bounce::testing::expect_rejected;
+using bounce::testing::run_cli;
+
+namespace {
+
+std::string option(const std::string& name) {
+  std::string o = "--" + name;
+  for (char& c : o) c = c == '_' ? '-' : c;
+  return o;
+}
+
+// A value of the right kind for a parameter (its default, else a number).
+std::string some_value(const nlohmann::json& p) {
+  if (!p["default"].is_null()) return p["default"].get<std::string>();
+  if (p["kind"] == "reals") return "1e-3,1e-3";
+  return "1e-3";
+}
+
+// The models as the CLI lists them (`bounce models --json`): the registry it was built with.
+nlohmann::json models() {
+  const auto r = run_cli({"models", "--json"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return nlohmann::json::parse(r.out)["models"];
+}
+
+}  // namespace
+
+TEST(CliOptions, EveryModelParameterIsAnOption) {
+  const auto help = run_cli({"collide", "--help"});
+  ASSERT_EQ(help.exit_code, 0);
+  for (const auto& row : models()) {
+    EXPECT_NE(help.out.find(row["name"].get<std::string>()), std::string::npos) << row["name"];
+    for (const auto& p : row["parameters"]) {
+      EXPECT_NE(help.out.find(option(p["name"]) + " "), std::string::npos) << p["name"];
+    }
+  }
+}
+
+TEST(CliOptions, EachModelRefusesOptionsOfOthers) {
+  const nlohmann::json rows = models();
+  for (const auto& row : rows) {
+    std::set<std::string> own;
+    for (const auto& p : row["parameters"]) own.insert(p["name"]);
+    std::set<std::string> tried;
+    for (const auto& other : rows) {
+      for (const auto& p : other["parameters"]) {
+        const std::string name = p["name"];
+        if (own.count(name) || !tried.insert(name).second) continue;
+        const std::string value = some_value(p);
+        expect_rejected({"collide", "--material", "water-ice", "--radius", "1e-6", "--model", row["name"],
+                         option(name), value, "--velocity", "1"},
+                        option(name), value);
+      }
+    }
+    EXPECT_FALSE(tried.empty()) << row["name"];
+  }
+}
+
+// Options of other commands, of the tangential law without a tangential velocity, and of
+// models in commands that do not use them.
+TEST(CliOptions, CommandsRefuseUnusedOptions) {
+  const std::vector<std::string> ice = {"--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6"};
+  auto with = [&](std::vector<std::string> args) {
+    args.insert(args.begin() + 1, ice.begin(), ice.end());
+    return args;
+  };
+  expect_rejected(with({"collide", "--velocity", "1", "--friction", "0.3"}), "--friction", "0.3");
+  expect_rejected(with({"collide", "--velocity", "1", "--follow", "1e-3"}), "--follow", "1e-3");
+  expect_rejected(with({"collide", "--velocity", "1", "--trajectory-points", "100"}), "--trajectory-points", "100");
+  expect_rejected(with({"curve", "--velocities", "1:2:3", "--velocity", "1"}), "--velocity", "1");
+  expect_rejected(with({"analytic", "--velocity", "1", "--yield", "1e7"}), "--yield", "1e7");
+  expect_rejected(with({"analytic", "--velocity", "1", "--contact-end", "force"}), "--contact-end", "force");
+  expect_rejected(with({"sticking", "--model", "jkr-viscoelastic", "--gamma", "0.1", "--friction", "0.3"}),
+                  "--friction", "0.3");
+  expect_rejected(with({"table", "--velocities", "1:2", "--csv", "--velocity", "1"}), "--velocity", "1");
+  expect_rejected(with({"table", "--velocities", "1:2", "--csv", "--friction", "0.3", "--asperity", "1e-6"}),
+                  "--friction", "0.3");
+  expect_rejected({"contact", "--material", "steel", "--radius", "1e-3", "--z0", "3e-10"}, "--z0", "3e-10");
+  expect_rejected({"contact", "--material", "water-ice", "--radius", "1e-6", "--law", "jkr", "--angle", "0.3"},
+                  "--angle", "0.3");
+  expect_rejected({"contact", "--material", "steel", "--radius", "1e-3", "--log"}, "--log", "true");
+  expect_rejected(with({"collide", "--velocity", "1", "--json", "--csv"}), "--csv", "given");
+}
