@@ -4,6 +4,7 @@
 #   make demo   install missing Debian packages, build, run the main job into out/
 #   make bench  build and run the benchmarks (not part of `make test`)
 #   make check-long  opt-in long sweeps (results recorded in docs/)
+#   make lint        opt-in: functions over 60 lines, files over 400 (clang-tidy), layering
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
@@ -11,7 +12,7 @@ WERROR    ?= ON
 PYTHON    := /usr/bin/python3
 CMAKE_FLAGS ?=
 
-.PHONY: all build deps configure test demo bench check-long clean
+.PHONY: all build deps configure test demo bench check-long lint clean
 
 all: build
 
@@ -42,6 +43,10 @@ bench: deps
 check-long: deps
 	@$(MAKE) --no-print-directory build
 	cd $(BUILD_DIR) && ctest --output-on-failure -L long
+
+lint: build
+	$(PYTHON) tools/check_layers.py
+	./tools/check_sizes.sh $(BUILD_DIR)
 
 clean:
 	rm -rf $(BUILD_DIR) out

@@ -145,7 +145,7 @@ std::function<int()> sticking(Options& o) {
 }
 
 std::function<int()> rules(Options& o) {
-  const std::string* input = o.add_text("input", "JSON file of encounters (default -: standard input)");
+  const std::string* input = o.add_text("input", "JSON file of encounters (default -: standard input)", "FILE");
   return [&o, input] {
     const std::string path = o.given("input") ? *input : "-";
     const std::string text = read_file("input", path, "a readable JSON file (or - for standard input)");
@@ -169,8 +169,8 @@ int write_table(const Options& o, const std::string& prefix, const auto& table) 
 std::function<int()> table(Options& o) {
   o.add_flag("json", "write the table as JSON (read back by --load)");
   o.add_flag("csv", "write the table's nodes as CSV");
-  const std::string* prefix = o.add_text("c_header", "write a self-contained C99 header; PREFIX names its symbols");
-  const std::string* load = o.add_text("load", "read a JSON table and print its value at --velocity");
+  const std::string* prefix = o.add_text("c_header", "write a self-contained C99 header; PREFIX names its symbols", "PREFIX");
+  const std::string* load = o.add_text("load", "read a JSON table and print its value at --velocity", "FILE");
   const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
   return [&o, prefix, load, progress] {
     if (o.given("load")) {

@@ -1,5 +1,8 @@
 #include "options.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -32,6 +35,24 @@ const char* group_of(const api::CommandSpec& command, const std::string& name) {
   return command.takes_model ? "Model" : "Law";
 }
 
+// How a value looks in --help: the spec's placeholder, or from its kind and unit
+// ("S" for seconds, "PA", "R1,R2", "overlap|force", "X" for a dimensionless number).
+std::string placeholder(const ParameterSpec& s) {
+  if (!s.placeholder.empty()) return s.placeholder;
+  switch (s.kind) {
+    case ParameterKind::choice: return fmt::format("{}", fmt::join(s.choices, "|"));
+    case ParameterKind::reals: return "R1,R2";
+    case ParameterKind::text: return "TEXT";
+    case ParameterKind::flag: return "";
+    case ParameterKind::real: break;
+  }
+  if (s.unit.empty()) return "X";
+  std::string u;
+  for (char c : s.unit) u += c == ' ' || c == '/' ? '_' : c == '^' ? '\0' : static_cast<char>(std::toupper(c));
+  u.erase(std::remove(u.begin(), u.end(), '\0'), u.end());
+  return u;
+}
+
 }  // namespace
 
 std::string option_name(const std::string& parameter) {
@@ -49,7 +70,7 @@ Options::Options(CLI::App* app, const api::CommandSpec& command) : app_(app) {
       option = app->add_flag(option_name(s.name), *value, help_line(s));
     } else {
       auto& value = text_[s.name] = std::make_unique<std::string>();
-      option = app->add_option(option_name(s.name), *value, help_line(s));
+      option = app->add_option(option_name(s.name), *value, help_line(s))->type_name(placeholder(s));
     }
     option->group(group_of(command, s.name));
     options_[s.name] = option;
@@ -63,9 +84,9 @@ bool* Options::add_flag(const std::string& name, const std::string& help) {
   return value.get();
 }
 
-std::string* Options::add_text(const std::string& name, const std::string& help) {
+std::string* Options::add_text(const std::string& name, const std::string& help, const std::string& placeholder) {
   auto& value = text_[name] = std::make_unique<std::string>();
-  options_[name] = app_->add_option(option_name(name), *value, help)->group("Output");
+  options_[name] = app_->add_option(option_name(name), *value, help)->group("Output")->type_name(placeholder);
   own_.insert(name);
   return value.get();
 }

@@ -24,8 +24,8 @@ class Options {
   Options(CLI::App* app, const api::CommandSpec& command);
   /// A flag that only the CLI has (output format, progress).
   bool* add_flag(const std::string& name, const std::string& help);
-  /// A text option that only the CLI has (an input file, a C prefix).
-  std::string* add_text(const std::string& name, const std::string& help);
+  /// A text option that only the CLI has (an input file, a C prefix); `placeholder` in --help.
+  std::string* add_text(const std::string& name, const std::string& help, const std::string& placeholder);
   /// Was the CLI's own option given?
   bool given(const std::string& name) const;
 

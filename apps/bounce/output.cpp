@@ -21,17 +21,18 @@ struct ToJson {
   nlohmann::json operator()(std::int64_t i) const { return i; }
   nlohmann::json operator()(double x) const { return x; }
   nlohmann::json operator()(const std::string& s) const { return s; }
-  nlohmann::json operator()(const Value::List& list) const {
+  nlohmann::json operator()(const Box<Value::List>& list) const {
     nlohmann::json j = nlohmann::json::array();
-    for (const Value& v : list) j.push_back(to_json(v));
+    for (const Value& v : *list) j.push_back(to_json(v));
     return j;
   }
-  nlohmann::json operator()(const Record& r) const {
+  nlohmann::json operator()(const Box<Record>& r) const {
     nlohmann::json j = nlohmann::json::object();
-    for (const auto& [key, value] : r.fields()) j[key] = to_json(value);
+    for (const auto& [key, value] : r->fields()) j[key] = to_json(value);
     return j;
   }
-  nlohmann::json operator()(const Table& t) const {
+  nlohmann::json operator()(const Box<Table>& boxed) const {
+    const Table& t = *boxed;
     nlohmann::json j = nlohmann::json::array();
     for (const auto& row : t.rows) {
       nlohmann::json r = nlohmann::json::object();

@@ -16,17 +16,17 @@ struct ToPython {
   py::object operator()(std::int64_t i) const { return py::int_(i); }
   py::object operator()(double x) const { return py::float_(x); }
   py::object operator()(const std::string& s) const { return py::str(s); }
-  py::object operator()(const Value::List& list) const {
+  py::object operator()(const Box<Value::List>& list) const {
     py::list out;
-    for (const Value& v : list) out.append(to_python(v));
+    for (const Value& v : *list) out.append(to_python(v));
     return out;
   }
-  py::object operator()(const Record& r) const {
+  py::object operator()(const Box<Record>& r) const {
     py::dict out;
-    for (const auto& [key, value] : r.fields()) out[py::str(key)] = to_python(value);
+    for (const auto& [key, value] : r->fields()) out[py::str(key)] = to_python(value);
     return out;
   }
-  py::object operator()(const Table& t) const { return table_to_python(t); }
+  py::object operator()(const Box<Table>& t) const { return table_to_python(*t); }
 };
 
 bool text_column(const Table& t, std::size_t c) {

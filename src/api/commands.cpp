@@ -34,9 +34,10 @@ ParameterSpec flag(std::string name, std::string help) {
   return own(std::move(name), ParameterKind::flag, "", "", std::move(help));
 }
 
-ParameterSpec text(std::string name, std::string help) {
+ParameterSpec text(std::string name, std::string help, std::string placeholder) {
   ParameterSpec s = own(std::move(name), ParameterKind::text, "", "", std::move(help));
   s.quantity = s.help;
+  s.placeholder = std::move(placeholder);
   return s;
 }
 
@@ -69,8 +70,8 @@ std::vector<CommandSpec> make_commands() {
       {"contact", "Static contact of two bodies: Hertz, JKR, DMT or Maugis-Dugdale", true, false,
        {with_default(own("force", ParameterKind::real, "force", "N", "total normal force [N] (default 0: zero external load)"), 0.0),
         own("overlap", ParameterKind::real, "overlap", "m", "overlap (mutual approach) [m]"),
-        text("forces", "CSV curve over forces LO:HI:N [N]"), text("overlaps", "CSV curve over overlaps LO:HI:N [m]"),
-        text("contact_radii", "CSV curve over contact radii LO:HI:N [m] (whole curve, both branches)"),
+        text("forces", "CSV curve over forces LO:HI:N [N]", "LO:HI:N"), text("overlaps", "CSV curve over overlaps LO:HI:N [m]", "LO:HI:N"),
+        text("contact_radii", "CSV curve over contact radii LO:HI:N [m] (whole curve, both branches)", "LO:HI:N"),
         flag("log", "geometric spacing of the range")}},
       {"collide", "One head-on (or oblique) collision: COR, outcome, contact time, energy budget", true, true,
        {velocity("impact velocity g [m/s]"), tangential_velocity(),
@@ -82,23 +83,23 @@ std::vector<CommandSpec> make_commands() {
         own("follow", ParameterKind::real, "follow time", "s",
             "krijt / jkr-viscoelastic: keep integrating a sticking collision until this time [s]", positive())}},
       {"curve", "COR against impact velocity (CSV by default)", true, true,
-       {text("velocities", "impact velocities LO:HI:N [m/s]"),
-        text("radii", "radii LO:HI:N of body 1 [m] at a fixed velocity (K13 fig. 5)"),
+       {text("velocities", "impact velocities LO:HI:N [m/s]", "LO:HI:N"),
+        text("radii", "radii LO:HI:N of body 1 [m] at a fixed velocity (K13 fig. 5)", "LO:HI:N"),
         velocity("the impact velocity of a radii sweep [m/s]"), log,
         flag("closed_forms", "add K13's e_JKR (24), e_D (26), e_I (27) columns (adhesive models)"),
         tangential_velocity()}},
       {"analytic", "kappa, g* and the exact COR beside BP04's implicit, series and Pade forms", true, true,
        {velocity("impact velocity g [m/s]")}},
       {"sticking", "The sticking velocity of an adhesive model (and its closed forms)", true, true,
-       {text("radii", "radii LO:HI:N of body 1 [m]: CSV of the sticking velocity (K13 fig. 5)"),
+       {text("radii", "radii LO:HI:N of body 1 [m]: CSV of the sticking velocity (K13 fig. 5)", "LO:HI:N"),
         flag("log", "geometric spacing of the radii"),
         with_default(own("relative_tolerance", ParameterKind::real, "relative tolerance", "",
                          "relative width of the final bracket (default 1e-6)", open_interval(1e-12, 0.1)),
                      1e-6)}},
       {"rules", "Post-collision velocities and spins (BSHP96 (42)-(43)) of JSON encounters", true, true, {}},
       {"table", "eps^N(g) and the outcome, or eps^T(g^N, g^T), as a table for other simulators", true, true,
-       {text("velocities", "the table's range LO:HI of (normal) impact speeds [m/s]"),
-        text("tangential_velocities", "a table of eps^T(g^N, g^T) (asperity law) with this range LO:HI of g^T [m/s]"),
+       {text("velocities", "the table's range LO:HI of (normal) impact speeds [m/s]", "LO:HI"),
+        text("tangential_velocities", "a table of eps^T(g^N, g^T) (asperity law) with this range LO:HI of g^T [m/s]", "LO:HI"),
         with_default(own("bound", ParameterKind::real, "interpolation error bound", "",
                          "interpolation error to reach (default 1e-6)", open_interval(1e-10, 0.1)),
                      1e-6),
@@ -179,7 +180,7 @@ const CommandSpec& command(std::string_view name) {
 }
 
 ParameterSpec model_parameter() {
-  ParameterSpec s = text("model", "");
+  ParameterSpec s = text("model", "", "NAME");
   s.kind = ParameterKind::choice;
   s.choices = models::model_registry().names();
   s.help = fmt::format("{} (default viscoelastic)", fmt::join(s.choices, " | "));
@@ -189,7 +190,7 @@ ParameterSpec model_parameter() {
 }
 
 ParameterSpec law_parameter() {
-  ParameterSpec s = text("law", "");
+  ParameterSpec s = text("law", "", "NAME");
   s.kind = ParameterKind::choice;
   for (const auto& row : contact::contact_laws()) s.choices.push_back(row.name);
   s.help = fmt::format("{} (default hertz)", fmt::join(s.choices, " | "));

@@ -4,6 +4,21 @@
 
 namespace bounce {
 
+Value::Value(List list) : data_(Box<List>(std::move(list))) {}
+Value::Value(Record record) : data_(Box<Record>(std::move(record))) {}
+Value::Value(Table table) : data_(Box<Table>(std::move(table))) {}
+Value::Value(const std::vector<double>& numbers) : Value(List(numbers.begin(), numbers.end())) {}
+Value::Value(const std::vector<std::string>& texts) : Value(List(texts.begin(), texts.end())) {}
+
+double Value::number() const {
+  if (const auto* i = std::get_if<std::int64_t>(&data_)) return static_cast<double>(*i);
+  return std::get<double>(data_);
+}
+
+const Value::List& Value::list() const { return *std::get<Box<List>>(data_); }
+const Record& Value::record() const { return *std::get<Box<Record>>(data_); }
+const Table& Value::table() const { return *std::get<Box<Table>>(data_); }
+
 Record& Record::set(std::string key, Value value) {
   for (auto& [k, v] : fields_) {
     if (k == key) {
@@ -26,21 +41,6 @@ const Value& Record::at(std::string_view key) const {
   const Value* v = find(key);
   if (v == nullptr) throw std::out_of_range("no key " + std::string(key) + " in the record");
   return *v;
-}
-
-Value::Value(const std::vector<double>& numbers) {
-  List list(numbers.begin(), numbers.end());
-  data_ = std::move(list);
-}
-
-Value::Value(const std::vector<std::string>& texts) {
-  List list(texts.begin(), texts.end());
-  data_ = std::move(list);
-}
-
-double Value::number() const {
-  if (const auto* i = std::get_if<std::int64_t>(&data_)) return static_cast<double>(*i);
-  return std::get<double>(data_);
 }
 
 Record to_record(const std::vector<std::pair<std::string, double>>& named) {

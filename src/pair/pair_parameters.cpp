@@ -21,11 +21,13 @@ ParameterSpec real(std::string name, std::string quantity, std::string unit, std
   return s;
 }
 
-ParameterSpec text(std::string name, std::string help, ParameterKind kind = ParameterKind::text) {
+ParameterSpec text(std::string name, std::string help, ParameterKind kind = ParameterKind::text,
+                   std::string placeholder = "") {
   ParameterSpec s;
   s.name = std::move(name);
   s.kind = kind;
   s.quantity = s.help = std::move(help);
+  s.placeholder = std::move(placeholder);
   return s;
 }
 
@@ -33,8 +35,10 @@ ParameterSpec text(std::string name, std::string help, ParameterKind kind = Para
 void add_body(std::vector<ParameterSpec>& out, const std::string& n) {
   const std::string which = n.empty() ? "body 1" : "body 2";
   const std::string override_note = n.empty() ? " (overrides the material)" : " (default: body 1's)";
-  out.push_back(text("material" + n, n.empty() ? "body 1 material from the table (see `bounce materials`)"
-                                                : "body 2 material (default: body 1's)"));
+  out.push_back(text("material" + n,
+                     n.empty() ? "body 1 material from the table (see `bounce materials`)"
+                               : "body 2 material (default: body 1's)",
+                     ParameterKind::text, "NAME"));
   out.push_back(real("E" + n, "Young's modulus E", "Pa", which + " Young's modulus [Pa]" + override_note, positive()));
   out.push_back(real("nu" + n, "Poisson ratio nu", "", which + " Poisson ratio" + override_note, open_interval(-1.0, 0.5)));
   out.push_back(real("density" + n, "density", "kg/m^3", which + " density [kg/m^3]" + override_note, positive()));
@@ -52,7 +56,8 @@ std::vector<ParameterSpec> make_specs() {
   add_body(out, "2");
   out.push_back(text("wall", "body 2 is a flat elastic wall (of body 2's material)", ParameterKind::flag));
   out.push_back(text("rigid_wall", "body 2 is a flat, ideally rigid wall", ParameterKind::flag));
-  out.push_back(text("materials_file", "TOML materials table to use instead of the built-in one"));
+  out.push_back(text("materials_file", "TOML materials table to use instead of the built-in one", ParameterKind::text,
+                     "FILE"));
   return out;
 }
 

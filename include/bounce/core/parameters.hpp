@@ -62,6 +62,7 @@ struct ParameterSpec {
   std::vector<std::string> choices;  ///< choice
   std::size_t count = 1;             ///< reals: how many numbers
   std::optional<ParameterValue> default_value;  ///< used when not given; none: optional or required
+  std::string placeholder;  ///< how a value looks, for --help ("LO:HI:N", "FILE"); derived when empty
 
   /// "dissipative constant A [s]": the quantity and its unit, for messages.
   std::string what() const;
