@@ -18,41 +18,17 @@ namespace bounce::api {
 
 namespace {
 
-ParameterSpec own(std::string name, ParameterKind kind, std::string quantity, std::string unit, std::string help,
-                  Range range = {}) {
-  ParameterSpec s;
-  s.name = std::move(name);
-  s.kind = kind;
-  s.quantity = std::move(quantity);
-  s.unit = std::move(unit);
-  s.help = std::move(help);
-  s.range = range;
-  return s;
-}
-
-ParameterSpec flag(std::string name, std::string help) {
-  return own(std::move(name), ParameterKind::flag, "", "", std::move(help));
-}
-
-ParameterSpec text(std::string name, std::string help, std::string placeholder) {
-  ParameterSpec s = own(std::move(name), ParameterKind::text, "", "", std::move(help));
-  s.quantity = s.help;
-  s.placeholder = std::move(placeholder);
-  return s;
-}
-
 ParameterSpec velocity(std::string help) {
-  return own("velocity", ParameterKind::real, "impact velocity", "m/s", std::move(help), positive());
+  return real_parameter("velocity", "impact velocity", "m/s", positive(), std::move(help));
 }
 
 ParameterSpec tangential_velocity() {
-  return own("tangential_velocity", ParameterKind::real, "tangential impact velocity g^T", "m/s",
-             "tangential impact velocity g^T [m/s]: an oblique collision (BSHP96 §II B; 0: head-on)", non_negative());
+  return real_parameter("tangential_velocity", "tangential impact velocity g^T", "m/s", non_negative(),
+                        "tangential impact velocity g^T [m/s]: an oblique collision (BSHP96 §II B; 0: head-on)");
 }
 
-ParameterSpec with_default(ParameterSpec s, ParameterValue value) {
-  s.default_value = std::move(value);
-  return s;
+ParameterSpec range(const char* name, const char* help, const char* placeholder = "LO:HI:N") {
+  return text_parameter(name, help, placeholder);
 }
 
 ParameterSpec materials_file() {
@@ -62,49 +38,69 @@ ParameterSpec materials_file() {
   throw std::logic_error("the pair declares no materials_file");
 }
 
+CommandSpec contact_command() {
+  return {"contact", "Static contact of two bodies: Hertz, JKR, DMT or Maugis-Dugdale", true, false,
+          {with_default(real_parameter("force", "force", "N", Range{}, "total normal force [N] (default 0: zero external load)"),
+                        0.0),
+           real_parameter("overlap", "overlap", "m", Range{}, "overlap (mutual approach) [m]"),
+           range("forces", "CSV curve over forces LO:HI:N [N]"), range("overlaps", "CSV curve over overlaps LO:HI:N [m]"),
+           range("contact_radii", "CSV curve over contact radii LO:HI:N [m] (whole curve, both branches)"),
+           flag_parameter("log", "geometric spacing of the range")}};
+}
+
+CommandSpec collide_command() {
+  return {"collide", "One head-on (or oblique) collision: COR, outcome, contact time, energy budget", true, true,
+          {velocity("impact velocity g [m/s]"), tangential_velocity(),
+           flag_parameter("trajectory", "include the trajectory (direct integration)"),
+           with_default(real_parameter("trajectory_points", "trajectory samples", "", Range{2.0, 1e7, true, true, false},
+                                       "samples of the trajectory over about one contact time (default 400)"),
+                        400.0),
+           real_parameter("follow", "follow time", "s", positive(),
+                          "krijt / jkr-viscoelastic: keep integrating a sticking collision until this time [s]")}};
+}
+
+CommandSpec curve_command() {
+  return {"curve", "COR against impact velocity (CSV by default)", true, true,
+          {range("velocities", "impact velocities LO:HI:N [m/s]"),
+           range("radii", "radii LO:HI:N of body 1 [m] at a fixed velocity (K13 fig. 5)"),
+           velocity("the impact velocity of a radii sweep [m/s]"), flag_parameter("log", "geometric spacing of the sweep"),
+           flag_parameter("closed_forms", "add K13's e_JKR (24), e_D (26), e_I (27) columns (adhesive models)"),
+           tangential_velocity()}};
+}
+
+CommandSpec sticking_command() {
+  return {"sticking", "The sticking velocity of an adhesive model (and its closed forms)", true, true,
+          {range("radii", "radii LO:HI:N of body 1 [m]: CSV of the sticking velocity (K13 fig. 5)"),
+           flag_parameter("log", "geometric spacing of the radii"),
+           with_default(real_parameter("relative_tolerance", "relative tolerance", "", open_interval(1e-12, 0.1),
+                                       "relative width of the final bracket (default 1e-6)"),
+                        1e-6)}};
+}
+
+CommandSpec table_command() {
+  return {"table", "eps^N(g) and the outcome, or eps^T(g^N, g^T), as a table for other simulators", true, true,
+          {range("velocities", "the table's range LO:HI of (normal) impact speeds [m/s]", "LO:HI"),
+           range("tangential_velocities", "a table of eps^T(g^N, g^T) (asperity law) with this range LO:HI of g^T [m/s]",
+                 "LO:HI"),
+           with_default(real_parameter("bound", "interpolation error bound", "", open_interval(1e-10, 0.1),
+                                       "interpolation error to reach (default 1e-6)"),
+                        1e-6),
+           velocity("with a saved table (--load): the (normal) impact speed at which to read it [m/s]"),
+           tangential_velocity()}};
+}
+
 std::vector<CommandSpec> make_commands() {
-  const ParameterSpec log = flag("log", "geometric spacing of the sweep");
   return {
       {"materials", "List the materials table (K13 table 2 and more)", false, false, {materials_file()}},
       {"models", "List the collision models and contact laws with the parameters each takes", false, false, {}},
-      {"contact", "Static contact of two bodies: Hertz, JKR, DMT or Maugis-Dugdale", true, false,
-       {with_default(own("force", ParameterKind::real, "force", "N", "total normal force [N] (default 0: zero external load)"), 0.0),
-        own("overlap", ParameterKind::real, "overlap", "m", "overlap (mutual approach) [m]"),
-        text("forces", "CSV curve over forces LO:HI:N [N]", "LO:HI:N"), text("overlaps", "CSV curve over overlaps LO:HI:N [m]", "LO:HI:N"),
-        text("contact_radii", "CSV curve over contact radii LO:HI:N [m] (whole curve, both branches)", "LO:HI:N"),
-        flag("log", "geometric spacing of the range")}},
-      {"collide", "One head-on (or oblique) collision: COR, outcome, contact time, energy budget", true, true,
-       {velocity("impact velocity g [m/s]"), tangential_velocity(),
-        flag("trajectory", "include the trajectory (direct integration)"),
-        with_default(own("trajectory_points", ParameterKind::real, "trajectory samples", "",
-                         "samples of the trajectory over about one contact time (default 400)",
-                         Range{2.0, 1e7, true, true, false}),
-                     400.0),
-        own("follow", ParameterKind::real, "follow time", "s",
-            "krijt / jkr-viscoelastic: keep integrating a sticking collision until this time [s]", positive())}},
-      {"curve", "COR against impact velocity (CSV by default)", true, true,
-       {text("velocities", "impact velocities LO:HI:N [m/s]", "LO:HI:N"),
-        text("radii", "radii LO:HI:N of body 1 [m] at a fixed velocity (K13 fig. 5)", "LO:HI:N"),
-        velocity("the impact velocity of a radii sweep [m/s]"), log,
-        flag("closed_forms", "add K13's e_JKR (24), e_D (26), e_I (27) columns (adhesive models)"),
-        tangential_velocity()}},
+      contact_command(),
+      collide_command(),
+      curve_command(),
       {"analytic", "kappa, g* and the exact COR beside BP04's implicit, series and Pade forms", true, true,
        {velocity("impact velocity g [m/s]")}},
-      {"sticking", "The sticking velocity of an adhesive model (and its closed forms)", true, true,
-       {text("radii", "radii LO:HI:N of body 1 [m]: CSV of the sticking velocity (K13 fig. 5)", "LO:HI:N"),
-        flag("log", "geometric spacing of the radii"),
-        with_default(own("relative_tolerance", ParameterKind::real, "relative tolerance", "",
-                         "relative width of the final bracket (default 1e-6)", open_interval(1e-12, 0.1)),
-                     1e-6)}},
+      sticking_command(),
       {"rules", "Post-collision velocities and spins (BSHP96 (42)-(43)) of JSON encounters", true, true, {}},
-      {"table", "eps^N(g) and the outcome, or eps^T(g^N, g^T), as a table for other simulators", true, true,
-       {text("velocities", "the table's range LO:HI of (normal) impact speeds [m/s]", "LO:HI"),
-        text("tangential_velocities", "a table of eps^T(g^N, g^T) (asperity law) with this range LO:HI of g^T [m/s]", "LO:HI"),
-        with_default(own("bound", ParameterKind::real, "interpolation error bound", "",
-                         "interpolation error to reach (default 1e-6)", open_interval(1e-10, 0.1)),
-                     1e-6),
-        velocity("with a saved table (--load): the (normal) impact speed at which to read it [m/s]"),
-        tangential_velocity()}},
+      table_command(),
   };
 }
 
@@ -170,33 +166,24 @@ const std::vector<CommandSpec>& commands() {
   return table;
 }
 
-const CommandSpec& command(std::string_view name) {
-  for (const CommandSpec& c : commands()) {
-    if (c.name == name) return c;
-  }
-  std::vector<std::string> names;
-  for (const CommandSpec& c : commands()) names.push_back(c.name);
-  throw InvalidArgument("command", std::string(name), fmt::format("one of {}", fmt::join(names, ", ")));
-}
+const CommandSpec& command(std::string_view name) { return find_named(commands(), name, "command"); }
 
-ParameterSpec model_parameter() {
-  ParameterSpec s = text("model", "", "NAME");
-  s.kind = ParameterKind::choice;
-  s.choices = models::model_registry().names();
-  s.help = fmt::format("{} (default viscoelastic)", fmt::join(s.choices, " | "));
-  s.quantity = "model";
-  s.default_value = std::string("viscoelastic");
+namespace {
+// A keyword among `names` (the registry's), with its default.
+ParameterSpec keyword_parameter(const char* name, std::vector<std::string> names, const char* fallback) {
+  const std::string help = fmt::format("{} (default {})", fmt::join(names, " | "), fallback);
+  ParameterSpec s = with_default(choice_parameter(name, std::move(names), help), std::string(fallback));
+  s.placeholder = "NAME";
   return s;
 }
+}  // namespace
+
+ParameterSpec model_parameter() { return keyword_parameter("model", models::model_registry().names(), "viscoelastic"); }
 
 ParameterSpec law_parameter() {
-  ParameterSpec s = text("law", "", "NAME");
-  s.kind = ParameterKind::choice;
-  for (const auto& row : contact::contact_laws()) s.choices.push_back(row.name);
-  s.help = fmt::format("{} (default hertz)", fmt::join(s.choices, " | "));
-  s.quantity = "law";
-  s.default_value = std::string("hertz");
-  return s;
+  std::vector<std::string> names;
+  for (const auto& row : contact::contact_laws()) names.push_back(row.name);
+  return keyword_parameter("law", std::move(names), "hertz");
 }
 
 std::vector<ParameterSpec> offered_parameters(std::string_view name) {

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "binding.hpp"
+#include "records.hpp"
 #include "bounce/contact/law.hpp"
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/materials_table.hpp"
@@ -10,13 +11,8 @@ namespace bounce::api {
 
 namespace {
 
-Record material_record(const Material& m) {
-  Record j;
-  j.set("name", m.name);
-  j.set("youngs_modulus", m.youngs_modulus);
-  j.set("poisson_ratio", m.poisson_ratio);
-  j.set("density", m.density);
-  j.set("surface_energy", m.surface_energy ? Value(*m.surface_energy) : Value());
+Record table_entry(const Material& m) {
+  Record j = detail::material_record(m);
   if (m.surface_energy_range) {
     j.set("surface_energy_range", std::vector<double>{(*m.surface_energy_range)[0], (*m.surface_energy_range)[1]});
   }
@@ -69,7 +65,7 @@ Value materials(const Inputs& inputs) {
   const MaterialTable table =
       p.given("materials_file") ? MaterialTable::from_file(p.text("materials_file")) : MaterialTable::builtin();
   Value::List out;
-  for (const Material& m : table.materials()) out.push_back(material_record(m));
+  for (const Material& m : table.materials()) out.push_back(table_entry(m));
   return out;
 }
 

@@ -3,18 +3,14 @@
 
 #include "bounce/api/front_door.hpp"
 #include "bounce/dynamics/outcome.hpp"
+#include "records.hpp"
 
 namespace bounce::api {
 
 namespace {
 
 Record body_record(const Body& b) {
-  Record r;
-  r.set("material", b.material.name);
-  r.set("youngs_modulus", b.material.youngs_modulus);
-  r.set("poisson_ratio", b.material.poisson_ratio);
-  r.set("density", b.material.density);
-  r.set("surface_energy", b.material.surface_energy ? Value(*b.material.surface_energy) : Value());
+  Record r = detail::material_record(b.material, "material");
   if (b.is_wall()) {
     r.set("kind", b.rigid ? "rigid-wall" : "wall");
   } else {
@@ -25,29 +21,11 @@ Record body_record(const Body& b) {
   return r;
 }
 
-Record energy_record(const dynamics::EnergyBudget& e) {
-  return Record()
-      .set("initial_kinetic", e.initial_kinetic)
-      .set("final_kinetic", e.final_kinetic)
-      .set("bulk_dissipated", e.bulk_dissipated)
-      .set("crack_dissipated", e.crack_dissipated)
-      .set("plastic_dissipated", e.plastic_dissipated)
-      .set("elastic_remaining", e.elastic_remaining)
-      .set("surface_remaining", e.surface_remaining)
-      .set("closure_error", e.closure_error);
-}
-
 Record tangential_record(const dynamics::TangentialOutcome& t) {
-  return Record()
-      .set("cor", t.cor)
-      .set("initial_kinetic", t.initial_kinetic)
-      .set("final_kinetic", t.final_kinetic)
-      .set("asperity_dissipated", t.asperity_dissipated)
-      .set("stored_at_end", t.stored_at_end)
-      .set("stiffness_work", t.stiffness_work)
-      .set("breaks", t.breaks)
-      .set("averaged_time", t.averaged_time)
-      .set("steps", t.steps);
+  Record r = to_record(named_values(t));
+  r.set("breaks", t.breaks);
+  r.set("steps", t.steps);
+  return r;
 }
 
 Table trajectory_table(const std::vector<dynamics::TrajectorySample>& samples) {
@@ -87,7 +65,7 @@ Record outcome_record(const dynamics::CollisionOutcome& o) {
   r.set("time_of_max_overlap", o.time_of_max_overlap);
   r.set("method", o.method);
   r.set("steps", o.steps);
-  r.set("energy", energy_record(o.energy));
+  r.set("energy", to_record(named_values(o.energy)));
   if (o.tangential) {
     r.set("cor_tangential", o.tangential->cor);
     r.set("tangential", tangential_record(*o.tangential));
@@ -103,9 +81,18 @@ Record outcome_record(const dynamics::CollisionOutcome& o) {
 // --- what several commands add --------------------------------------------------------
 
 #include "bounce/analysis/closed_forms.hpp"
-#include "records.hpp"
 
 namespace bounce::api::detail {
+
+Record material_record(const Material& m, const char* name_key) {
+  Record j;
+  j.set(name_key, m.name);
+  j.set("youngs_modulus", m.youngs_modulus);
+  j.set("poisson_ratio", m.poisson_ratio);
+  j.set("density", m.density);
+  j.set("surface_energy", m.surface_energy ? Value(*m.surface_energy) : Value());
+  return j;
+}
 
 void add_scales(Record& out, const Pair& pair, const models::Model& model, double velocity) {
   if (!model.hertz) return;

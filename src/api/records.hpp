@@ -5,6 +5,8 @@
 
 namespace bounce::api::detail {
 
+/// A material's values (SI); its name under `name_key` ("name" in the table, "material" in a body).
+Record material_record(const Material& m, const char* name_key = "name");
 /// kappa, g* and the Hertz scales of a Hertz-type model (BP04 §8.3); nothing for the others.
 void add_scales(Record& out, const Pair& pair, const models::Model& model, double velocity);
 /// The closed forms beside a collision (analysis/closed_forms.hpp).

@@ -101,25 +101,19 @@ namespace bounce::contact::convex {
 
 namespace {
 std::vector<ParameterSpec> make_shape_parameters() {
-  ParameterSpec r1;
-  r1.name = "curvature_radii";
+  Range radii = positive();
+  radii.infinite = true;  // a flat direction
+  ParameterSpec r1 = real_parameter("curvature_radii", "principal radii R1,R2 of body 1", "m", radii,
+                                    "principal radii R1,R2 of body 1 [m] (convex bodies; inf for a flat direction)");
   r1.kind = ParameterKind::reals;
   r1.count = 2;
-  r1.quantity = "principal radii R1,R2 of body 1";
-  r1.unit = "m";
-  r1.range = positive();
-  r1.range.infinite = true;
-  r1.help = "principal radii R1,R2 of body 1 [m] (convex bodies; inf for a flat direction)";
   ParameterSpec r2 = r1;
   r2.name = "curvature_radii2";
   r2.quantity = "principal radii R1',R2' of body 2";
   r2.help = "principal radii R1',R2' of body 2 [m] (default: as body 1, or flat for a wall)";
-  ParameterSpec angle;
-  angle.name = "angle";
-  angle.quantity = "angle phi between the planes of R1 and R1'";
-  angle.unit = "rad";
-  angle.help = "angle phi between the planes of R1 and R1' [rad] (convex bodies; default 0)";
-  return {r1, r2, angle};
+  return {r1, r2,
+          real_parameter("angle", "angle phi between the planes of R1 and R1'", "rad", Range{},
+                         "angle phi between the planes of R1 and R1' [rad] (convex bodies; default 0)")};
 }
 }  // namespace
 

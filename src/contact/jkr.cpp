@@ -134,21 +134,15 @@ class JkrLaw final : public ContactLaw {
 
   ContactPoint at_force(double force) const override {
     const double f_c = jkr::pull_off_force(p_);
-    if (!std::isfinite(force) || force < f_c) {
-      throw InvalidArgument("force", format_value(force),
-                            "force >= the JKR pull-off force " + format_value(f_c) + " N");
-    }
+    require_at_least("force", force, f_c, "force >= the JKR pull-off force " + format_value(f_c) + " N");
     const double a = jkr::contact_radius_from_force(p_, force);
     return {a, jkr::overlap(p_, a), force};
   }
 
   ContactPoint at_overlap(double overlap) const override {
     const double delta_c = jkr::separation_overlap(p_);
-    if (!std::isfinite(overlap) || overlap < delta_c) {
-      throw InvalidArgument("overlap", format_value(overlap),
-                            "overlap >= " + format_value(delta_c) +
-                                " m (JKR contact breaks at more negative overlap)");
-    }
+    require_at_least("overlap", overlap, delta_c,
+                     "overlap >= " + format_value(delta_c) + " m (JKR contact breaks at more negative overlap)");
     const double a = jkr::contact_radius_from_overlap(p_, overlap);
     return {a, overlap, jkr::force(p_, a)};
   }

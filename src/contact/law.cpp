@@ -52,14 +52,7 @@ const std::vector<LawRow>& contact_laws() {
   return table;
 }
 
-const LawRow& contact_law(std::string_view name) {
-  for (const LawRow& row : contact_laws()) {
-    if (row.name == name) return row;
-  }
-  std::vector<std::string> names;
-  for (const LawRow& row : contact_laws()) names.push_back(row.name);
-  throw InvalidArgument("law", std::string(name), fmt::format("one of {}", fmt::join(names, ", ")));
-}
+const LawRow& contact_law(std::string_view name) { return find_named(contact_laws(), name, "law"); }
 
 std::unique_ptr<ContactLaw> make_contact_law(std::string_view name, const Pair& pair, const Parameters& p) {
   return contact_law(name).factory(pair, p);

@@ -58,16 +58,10 @@ std::string regime_bp04(double mu) {
 }
 
 ParameterSpec z0_parameter() {
-  ParameterSpec s;
-  s.name = "z0";
-  s.quantity = "equilibrium separation z0";
-  s.unit = "m";
-  s.range = positive();
-  s.default_value = 0.2e-9;
-  s.help =
-      "equilibrium separation z0 [m] of the surfaces: Tabor parameter K13 (11), Maugis' lambda, krijt's "
-      "sigma0 = gamma/z0 (default 2e-10)";
-  return s;
+  return with_default(real_parameter("z0", "equilibrium separation z0", "m", positive(),
+                                     "equilibrium separation z0 [m] of the surfaces: Tabor parameter K13 (11), "
+                                     "Maugis' lambda, krijt's sigma0 = gamma/z0 (default 2e-10)"),
+                      0.2e-9);
 }
 
 TaborSummary tabor_summary(double r, double e, double gamma, double z0) {

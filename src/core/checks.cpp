@@ -16,6 +16,12 @@ std::string format_value(double value) {
   return std::string(buffer, end);
 }
 
+std::string one_of(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) s += (i == 0 ? "" : ", ") + names[i];
+  return s;
+}
+
 double require_finite(std::string_view parameter, double value) {
   if (!std::isfinite(value)) {
     throw InvalidArgument(std::string(parameter), format_value(value), "a finite number");
@@ -35,6 +41,13 @@ double require_non_negative(std::string_view parameter, double value, std::strin
   if (!std::isfinite(value) || value < 0.0) {
     throw InvalidArgument(std::string(parameter), format_value(value),
                           fmt::format("{} >= 0 and finite", what));
+  }
+  return value;
+}
+
+double require_at_least(std::string_view parameter, double value, double lowest, std::string_view allowed) {
+  if (!std::isfinite(value) || value < lowest) {
+    throw InvalidArgument(std::string(parameter), format_value(value), std::string(allowed));
   }
   return value;
 }

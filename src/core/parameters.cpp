@@ -41,6 +41,48 @@ std::string ParameterSpec::what() const { return unit.empty() ? quantity : fmt::
 
 std::string ParameterSpec::default_text() const { return default_value ? value_text(*default_value) : std::string(); }
 
+ParameterSpec real_parameter(std::string name, std::string quantity, std::string unit, Range range, std::string help) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.quantity = std::move(quantity);
+  s.unit = std::move(unit);
+  s.range = range;
+  s.help = std::move(help);
+  return s;
+}
+
+ParameterSpec choice_parameter(std::string name, std::vector<std::string> choices, std::string help) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.kind = ParameterKind::choice;
+  s.quantity = s.name;
+  s.default_value = choices.front();
+  s.choices = std::move(choices);
+  s.help = std::move(help);
+  return s;
+}
+
+ParameterSpec text_parameter(std::string name, std::string help, std::string placeholder) {
+  ParameterSpec s;
+  s.name = std::move(name);
+  s.kind = ParameterKind::text;
+  s.quantity = help;
+  s.help = std::move(help);
+  s.placeholder = std::move(placeholder);
+  return s;
+}
+
+ParameterSpec flag_parameter(std::string name, std::string help) {
+  ParameterSpec s = text_parameter(std::move(name), std::move(help), "");
+  s.kind = ParameterKind::flag;
+  return s;
+}
+
+ParameterSpec with_default(ParameterSpec spec, ParameterValue value) {
+  spec.default_value = std::move(value);
+  return spec;
+}
+
 std::string value_text(const ParameterValue& value) {
   struct Text {
     std::string operator()(double x) const { return format_value(x); }

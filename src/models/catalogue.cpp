@@ -9,12 +9,7 @@ namespace bounce::models::catalogue {
 namespace {
 ParameterSpec real(std::string name, std::string quantity, std::string unit, Range range, std::string help,
                    std::optional<double> default_value = std::nullopt) {
-  ParameterSpec s;
-  s.name = std::move(name);
-  s.quantity = std::move(quantity);
-  s.unit = std::move(unit);
-  s.range = range;
-  s.help = std::move(help);
+  ParameterSpec s = real_parameter(std::move(name), std::move(quantity), std::move(unit), range, std::move(help));
   if (default_value) s.default_value = *default_value;
   return s;
 }

@@ -8,12 +8,20 @@
 
 #include <fmt/format.h>
 
+#include "bounce/contact/hertz.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/models/krijt.hpp"
 #include "bounce/models/registry.hpp"
 
 namespace bounce::models::detail {
+
+double HertzTypeForce::elastic_force(double xi) const { return contact::hertz::force(g_.force_constant, xi); }
+double HertzTypeForce::elastic_energy(double xi) const { return contact::hertz::elastic_energy(g_.force_constant, xi); }
+double HertzTypeForce::contact_radius(double xi) const { return contact::hertz::contact_radius(g_.equivalent_radius, xi); }
+double HertzTypeForce::reference_overlap(double speed) const {  // BP04 (8.65), alpha = 3/2
+  return power_law_reference_overlap(g_.force_constant / g_.effective_mass, 1.5, speed);
+}
 
 namespace {
 // BP04 (8.38) is derived for one material; a rigid wall does not deform.

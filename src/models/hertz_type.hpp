@@ -11,6 +11,20 @@
 
 namespace bounce::models::detail {
 
+/// The elastic part of the Hertz-type force laws: F_el = C0 xi^{3/2}, U = (2/5) C0 xi^{5/2},
+/// a^2 = R xi, xi0 of BP04 (8.65) with alpha = 3/2. Each law adds its total force.
+class HertzTypeForce : public NormalForceModel {
+ public:
+  explicit HertzTypeForce(const HertzGeometry& g) : g_(g) {}
+  double elastic_force(double xi) const override;
+  double elastic_energy(double xi) const override;
+  double contact_radius(double xi) const override;
+  double reference_overlap(double speed) const override;
+
+ protected:
+  HertzGeometry g_;
+};
+
 /// A [s]: given, from eta1 and eta2 (BP04 (8.38), bodies of one material), or T_vis / nu^2
 /// (K13 after (18)); exactly one of these.
 double dissipative_constant(const Pair& pair, const Parameters& p, std::string_view model);

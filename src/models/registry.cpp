@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 
 #include "bounce/contact/convex.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "catalogue.hpp"
 #include "factories.hpp"
@@ -46,50 +47,26 @@ std::vector<ModelRow> builtin_rows() {
   };
 }
 
-ParameterSpec spec(std::string name, ParameterKind kind, std::string quantity, std::string unit, std::string help) {
-  ParameterSpec s;
-  s.name = std::move(name);
-  s.kind = kind;
-  s.quantity = std::move(quantity);
-  s.unit = std::move(unit);
-  s.help = std::move(help);
-  return s;
-}
-
-ParameterSpec choice(std::string name, std::vector<std::string> choices, std::string help) {
-  ParameterSpec s = spec(std::move(name), ParameterKind::choice, "", "", std::move(help));
-  s.quantity = s.name;
-  s.default_value = choices.front();
-  s.choices = std::move(choices);
-  return s;
-}
-
-ParameterSpec real(std::string name, std::string quantity, std::string unit, Range range, std::string help) {
-  ParameterSpec s = spec(std::move(name), ParameterKind::real, std::move(quantity), std::move(unit), std::move(help));
-  s.range = range;
-  return s;
-}
-
 // Every model: the end rule, plastic losses, the tangential law, the method.
 std::vector<ParameterSpec> every_model() {
   return {
-      choice("contact_end", {"overlap", "force"}, "overlap | force: when the contact ends (default overlap)"),
-      real("yield", "yield strength Y", "Pa", positive(),
-           "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
-      real("friction", "friction coefficient mu", "", non_negative(), "friction coefficient mu (BSHP96 (36))"),
-      real("asperity", "asperity size zeta0", "m", positive(), "asperity size zeta0 [m] (BSHP96 (32); asperity law)"),
-      choice("tangential_law", {"asperity", "step"}, "asperity (BSHP96 (35), default) | step (BSHP96 (39))"),
-      choice("asperity_form", {"published", "passive"},
+      choice_parameter("contact_end", {"overlap", "force"}, "overlap | force: when the contact ends (default overlap)"),
+      real_parameter("yield", "yield strength Y", "Pa", positive(),
+                     "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
+      real_parameter("friction", "friction coefficient mu", "", non_negative(), "friction coefficient mu (BSHP96 (36))"),
+      real_parameter("asperity", "asperity size zeta0", "m", positive(),
+                     "asperity size zeta0 [m] (BSHP96 (32); asperity law)"),
+      choice_parameter("tangential_law", {"asperity", "step"}, "asperity (BSHP96 (35), default) | step (BSHP96 (39))"),
+      choice_parameter("asperity_form", {"published", "passive"},
              "published (BSHP96 (35), default) | passive (no energy from the changing stiffness)"),
-      real("shear_damping", "shear damping gamma_s", "1/s", non_negative(), "gamma_s [1/s] (BSHP96 (39); step law)"),
-      choice("method", {"auto", "integrate", "master"}, "auto | integrate | master (default: master where valid)"),
+      real_parameter("shear_damping", "shear damping gamma_s", "1/s", non_negative(),
+                     "gamma_s [1/s] (BSHP96 (39); step law)"),
+      choice_parameter("method", {"auto", "integrate", "master"}, "auto | integrate | master (default: master where valid)"),
   };
 }
 
 ParameterSpec tolerance(std::string name, double lo, double fallback, std::string help) {
-  ParameterSpec s = real(std::move(name), "tolerance", "", open_interval(lo, 1e-3), std::move(help));
-  s.default_value = fallback;
-  return s;
+  return with_default(real_parameter(std::move(name), "tolerance", "", open_interval(lo, 1e-3), std::move(help)), fallback);
 }
 
 // What the capabilities add: convex shapes, the integrators' settings.
@@ -106,7 +83,7 @@ std::vector<ParameterSpec> by_capabilities(const Capabilities& c) {
     out.push_back(tolerance("tolerance", 1e-15, 1e-12,
                             "relative and absolute tolerance of direct integration (default 1e-12)"));
   }
-  if (c.stiff) out.push_back(choice("stiff_engine", {"rodas", "cvode"}, "krijt: rodas | cvode (default rodas; cvode cross-checks)"));
+  if (c.stiff) out.push_back(choice_parameter("stiff_engine", {"rodas", "cvode"}, "krijt: rodas | cvode (default rodas; cvode cross-checks)"));
   return out;
 }
 
@@ -148,12 +125,7 @@ const ModelRow& ModelRegistry::add(ModelRow row) {
   return rows_.back();
 }
 
-const ModelRow& ModelRegistry::at(std::string_view name) const {
-  for (const ModelRow& row : rows_) {
-    if (row.name == name) return row;
-  }
-  throw InvalidArgument("model", std::string(name), fmt::format("one of {}", fmt::join(names(), ", ")));
-}
+const ModelRow& ModelRegistry::at(std::string_view name) const { return find_named(rows_, name, "model"); }
 
 std::vector<std::string> ModelRegistry::names() const {
   std::vector<std::string> out;

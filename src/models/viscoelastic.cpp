@@ -12,9 +12,9 @@ namespace bounce::models {
 
 namespace {
 
-class ViscoelasticForce final : public NormalForceModel {
+class ViscoelasticForce final : public detail::HertzTypeForce {
  public:
-  ViscoelasticForce(const HertzGeometry& g, double a, std::string_view name) : g_(g), a_(a), name_(name) {}
+  ViscoelasticForce(const HertzGeometry& g, double a, std::string_view name) : HertzTypeForce(g), a_(a), name_(name) {}
   std::string_view name() const override { return name_; }
   double force(double xi, double rate) const override {  // BP04 (8.42), (8.37)
     if (xi <= 0.0) return 0.0;
@@ -24,15 +24,7 @@ class ViscoelasticForce final : public NormalForceModel {
   double force_sign(double xi, double rate) const override {
     return xi + 1.5 * a_ * rate;  // F = C0 sqrt(xi) (xi + (3/2) A xi'), continued through xi = 0
   }
-  double elastic_force(double xi) const override { return contact::hertz::force(g_.force_constant, xi); }
-  double elastic_energy(double xi) const override { return contact::hertz::elastic_energy(g_.force_constant, xi); }
-  double contact_radius(double xi) const override { return contact::hertz::contact_radius(g_.equivalent_radius, xi); }
-  double reference_overlap(double speed) const override {  // BP04 (8.65), alpha = 3/2
-    return power_law_reference_overlap(g_.force_constant / g_.effective_mass, 1.5, speed);
-  }
-
  private:
-  HertzGeometry g_;
   double a_;
   std::string name_;
 };

@@ -12,9 +12,9 @@ namespace bounce::models {
 
 namespace {
 
-class ShiftedViscoelasticForce final : public NormalForceModel {
+class ShiftedViscoelasticForce final : public detail::HertzTypeForce {
  public:
-  ShiftedViscoelasticForce(const HertzGeometry& g, double a) : g_(g), a_(a) {}
+  ShiftedViscoelasticForce(const HertzGeometry& g, double a) : HertzTypeForce(g), a_(a) {}
   std::string_view name() const override { return "viscoelastic-shifted"; }
   double force(double xi, double rate) const override {  // BSHP96 (25), clamped at zero
     if (xi <= 0.0) return 0.0;
@@ -22,15 +22,7 @@ class ShiftedViscoelasticForce final : public NormalForceModel {
     return g_.force_constant * shifted * std::sqrt(shifted);
   }
   double force_sign(double xi, double rate) const override { return xi + a_ * rate; }
-  double elastic_force(double xi) const override { return contact::hertz::force(g_.force_constant, xi); }
-  double elastic_energy(double xi) const override { return contact::hertz::elastic_energy(g_.force_constant, xi); }
-  double contact_radius(double xi) const override { return contact::hertz::contact_radius(g_.equivalent_radius, xi); }
-  double reference_overlap(double speed) const override {  // BP04 (8.65), alpha = 3/2
-    return power_law_reference_overlap(g_.force_constant / g_.effective_mass, 1.5, speed);
-  }
-
  private:
-  HertzGeometry g_;
   double a_;
 };
 

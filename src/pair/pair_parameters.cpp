@@ -11,53 +11,32 @@ namespace bounce {
 
 namespace {
 
-ParameterSpec real(std::string name, std::string quantity, std::string unit, std::string help, Range range) {
-  ParameterSpec s;
-  s.name = std::move(name);
-  s.quantity = std::move(quantity);
-  s.unit = std::move(unit);
-  s.help = std::move(help);
-  s.range = range;
-  return s;
-}
-
-ParameterSpec text(std::string name, std::string help, ParameterKind kind = ParameterKind::text,
-                   std::string placeholder = "") {
-  ParameterSpec s;
-  s.name = std::move(name);
-  s.kind = kind;
-  s.quantity = s.help = std::move(help);
-  s.placeholder = std::move(placeholder);
-  return s;
-}
-
 // The specs of one body ("" for body 1, "2" for body 2).
 void add_body(std::vector<ParameterSpec>& out, const std::string& n) {
   const std::string which = n.empty() ? "body 1" : "body 2";
-  const std::string override_note = n.empty() ? " (overrides the material)" : " (default: body 1's)";
-  out.push_back(text("material" + n,
-                     n.empty() ? "body 1 material from the table (see `bounce materials`)"
-                               : "body 2 material (default: body 1's)",
-                     ParameterKind::text, "NAME"));
-  out.push_back(real("E" + n, "Young's modulus E", "Pa", which + " Young's modulus [Pa]" + override_note, positive()));
-  out.push_back(real("nu" + n, "Poisson ratio nu", "", which + " Poisson ratio" + override_note, open_interval(-1.0, 0.5)));
-  out.push_back(real("density" + n, "density", "kg/m^3", which + " density [kg/m^3]" + override_note, positive()));
-  out.push_back(real("gamma" + n, "surface energy gamma", "J/m^2",
-                     which + " surface energy (work of adhesion) [J/m^2]" + override_note, non_negative()));
-  out.push_back(real("radius" + n, "radius", "m", n.empty() ? "body 1 radius [m]" : "body 2 radius [m] (default: body 1's)",
-                     positive()));
-  out.push_back(real("inertia" + n, "moment of inertia factor J/(m R^2)", "",
-                     which + " moment of inertia J/(m R^2) (default 2/5, a solid sphere; BSHP96 (4))", positive()));
+  const std::string note = n.empty() ? " (overrides the material)" : " (default: body 1's)";
+  out.push_back(text_parameter("material" + n,
+                               n.empty() ? "body 1 material from the table (see `bounce materials`)"
+                                         : "body 2 material (default: body 1's)",
+                               "NAME"));
+  out.push_back(real_parameter("E" + n, "Young's modulus E", "Pa", positive(), which + " Young's modulus [Pa]" + note));
+  out.push_back(real_parameter("nu" + n, "Poisson ratio nu", "", open_interval(-1.0, 0.5), which + " Poisson ratio" + note));
+  out.push_back(real_parameter("density" + n, "density", "kg/m^3", positive(), which + " density [kg/m^3]" + note));
+  out.push_back(real_parameter("gamma" + n, "surface energy gamma", "J/m^2", non_negative(),
+                               which + " surface energy (work of adhesion) [J/m^2]" + note));
+  out.push_back(real_parameter("radius" + n, "radius", "m", positive(),
+                               n.empty() ? "body 1 radius [m]" : "body 2 radius [m] (default: body 1's)"));
+  out.push_back(real_parameter("inertia" + n, "moment of inertia factor J/(m R^2)", "", positive(),
+                               which + " moment of inertia J/(m R^2) (default 2/5, a solid sphere; BSHP96 (4))"));
 }
 
 std::vector<ParameterSpec> make_specs() {
   std::vector<ParameterSpec> out;
   add_body(out, "");
   add_body(out, "2");
-  out.push_back(text("wall", "body 2 is a flat elastic wall (of body 2's material)", ParameterKind::flag));
-  out.push_back(text("rigid_wall", "body 2 is a flat, ideally rigid wall", ParameterKind::flag));
-  out.push_back(text("materials_file", "TOML materials table to use instead of the built-in one", ParameterKind::text,
-                     "FILE"));
+  out.push_back(flag_parameter("wall", "body 2 is a flat elastic wall (of body 2's material)"));
+  out.push_back(flag_parameter("rigid_wall", "body 2 is a flat, ideally rigid wall"));
+  out.push_back(text_parameter("materials_file", "TOML materials table to use instead of the built-in one", "FILE"));
   return out;
 }
 

@@ -5,6 +5,9 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "bounce/core/error.hpp"
 
 namespace bounce {
 
@@ -17,8 +20,26 @@ double require_finite(std::string_view parameter, double value);
 double require_positive(std::string_view parameter, double value, std::string_view what);
 /// value must be finite and >= 0.
 double require_non_negative(std::string_view parameter, double value, std::string_view what);
+/// value must be finite and >= lowest; `allowed` says so in words ("force >= the JKR
+/// pull-off force -1.2e-06 N").
+double require_at_least(std::string_view parameter, double value, double lowest, std::string_view allowed);
 /// value must be finite and lo < value < hi.
 double require_open_interval(std::string_view parameter, double value, double lo, double hi,
                              std::string_view what);
+
+/// "a, b, c": the names allowed, for a message.
+std::string one_of(const std::vector<std::string>& names);
+
+/// The row of `rows` (anything with a `name`) called `name`; InvalidArgument(parameter, name,
+/// "one of …") when there is none. The registries' lookup (models, contact laws, commands).
+template <class Rows>
+const auto& find_named(const Rows& rows, std::string_view name, const char* parameter) {
+  std::vector<std::string> names;
+  for (const auto& row : rows) {
+    if (row.name == name) return row;
+    names.push_back(row.name);
+  }
+  throw InvalidArgument(parameter, std::string(name), "one of " + one_of(names));
+}
 
 }  // namespace bounce

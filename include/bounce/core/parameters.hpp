@@ -70,6 +70,14 @@ struct ParameterSpec {
   std::string default_text() const;
 };
 
+// Specs in one expression (the declarations of the registries and commands).
+ParameterSpec real_parameter(std::string name, std::string quantity, std::string unit, Range range, std::string help);
+/// A choice; its default is the first choice.
+ParameterSpec choice_parameter(std::string name, std::vector<std::string> choices, std::string help);
+ParameterSpec text_parameter(std::string name, std::string help, std::string placeholder);
+ParameterSpec flag_parameter(std::string name, std::string help);
+ParameterSpec with_default(ParameterSpec spec, ParameterValue value);
+
 /// Text of a value as the user would type it ("1e-06", "force", "0.001,0.005", "true").
 std::string value_text(const ParameterValue& value);
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace bounce::dynamics {
@@ -63,6 +64,12 @@ struct TangentialOutcome {
   double averaged_time = 0.0;        ///< time spent with the sawtooth averaged (dense breaking) [s]
   long steps = 0;
 };
+
+/// The terms of the budget by name (the keys of the CLI's "energy" JSON and Python's dict).
+std::vector<std::pair<std::string, double>> named_values(const EnergyBudget& energy);
+/// The tangential energies, eps^T and the averaged time by name (breaks and steps are counts,
+/// apart).
+std::vector<std::pair<std::string, double>> named_values(const TangentialOutcome& tangential);
 
 struct CollisionOutcome {
   double cor = 0.0;                  ///< coefficient of normal restitution (0 when sticking)

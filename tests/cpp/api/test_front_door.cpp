@@ -35,21 +35,12 @@ class LinearSpring final : public models::NormalForceModel {
   double k_, c_, m_, r_;
 };
 
-ParameterSpec real(const char* name, const char* quantity, const char* unit, Range range) {
-  ParameterSpec s;
-  s.name = name;
-  s.quantity = quantity;
-  s.unit = unit;
-  s.range = range;
-  s.help = std::string(quantity) + " [" + unit + "]";
-  return s;
-}
-
 // The one row: keyword, summary, references, capabilities, parameters, factory.
 const models::ModelRow& register_toy() {
   static const models::ModelRow& row = models::model_registry().add(models::ModelRow{
       "test-linear-spring", "linear spring-dashpot (test only)", "Cundall & Strack (1979)", models::Capabilities{},
-      {real("stiffness", "spring stiffness k", "N/m", positive()), real("damping", "dashpot c", "N s/m", non_negative())},
+      {real_parameter("stiffness", "spring stiffness k", "N/m", positive(), "spring stiffness k [N/m]"),
+       real_parameter("damping", "dashpot c", "N s/m", non_negative(), "dashpot c [N s/m]")},
       [](const Pair& pair, const Parameters& p) {
         models::Model m;
         m.force = std::make_shared<LinearSpring>(p.require_real("stiffness", "a stiffness k > 0 N/m"),
