@@ -1,4 +1,4 @@
-// The adhesive robustness sweep of issue 4 (docs/adhesive.md): every K13 table-2
+// The adhesive robustness sweep (docs/adhesive.md): every K13 table-2
 // material, v in [1e-3, 1e2] m/s, R_eff in [1e-8, 1e-2] m, T_vis in [1e-16, 1e-8] s,
 // z0 in [0.1, 0.4] nm. Every collision must end as bounce or stick with finite
 // numbers and an energy budget that closes to 1e-5 of the impact energy, or with a

@@ -1,4 +1,4 @@
-"""Regenerate the papers' figures (SPEC §7) as PNG and SVG.
+"""Regenerate the papers' figures (docs/figures.md) as PNG and SVG.
 
     PYTHONPATH=build/python /usr/bin/python3 -m bounce.figures --out out/figures
     ... --only k13-fig4 bp04-fig8-2      # a subset

@@ -26,7 +26,7 @@ from . import _bounce as b
 
 # --- the set-ups of the papers ---------------------------------------------------------
 
-#: BSHP96 §III and SPEC §7: ice at low temperature, Y = 10 GPa, nu = 0.3, rho = 1000 kg/m^3.
+#: BSHP96 §III (the built-in ice-bshp96): ice at low temperature, Y = 10 GPa, nu = 0.3, rho = 1000 kg/m^3.
 BSHP96_MATERIAL = "ice-bshp96"
 #: BSHP96 §III: particle radius 1 cm.
 BSHP96_RADIUS = 1e-2
@@ -381,7 +381,7 @@ def k13_figC2(quick: bool = False) -> Figure:
                               {"loc": "center right", "bbox_to_anchor": (1.0, 0.68)})
 
 
-#: The figure set of SPEC §7, by file name.
+#: The figure set of docs/figures.md, by file name.
 FIGURES: dict[str, Callable[..., Figure]] = {
     "bshp96-fig1": bshp96_fig1,
     "bshp96-fig2": bshp96_fig2,

@@ -1,5 +1,5 @@
 /* eps^T(g^N, g^T) of BSHP96's asperity law (published form, (35) in the history form of
- * SPEC §5) from a table of the contact's fundamental solutions (docs/tables.md).
+ * docs/decisions.md D11) from a table of the contact's fundamental solutions (docs/tables.md).
  *
  * Between asperity breaks the tangential motion is linear, BSHP96 (10) with (35):
  *   p'' = -K(tau) p,  K = mu lambda_n f / kappa,  p = (zeta - zeta_a) / (g^T t_u),

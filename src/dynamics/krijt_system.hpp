@@ -173,7 +173,7 @@ class KrijtSystem final : public StiffSystem {
   }
 
   // The energy below which the grains can never separate [scaled]. U_K + U_E + U_S
-  // never increases and equals U_K >= 0 after a separation, so 0 always (SPEC §4.2).
+  // never increases and equals U_K >= 0 after a separation, so 0 always (docs/decisions.md D10).
   // Sharper, from the sign structure of the crack law (a' > 0 iff beta < 1): while
   // delta >= delta_c (the JKR fold) a contact with a >= a_c cannot shrink below a_c
   // (at a = a_c, beta <= 1), and a break needs delta < delta_c; crossing delta_c with

@@ -3,7 +3,7 @@
 //
 // A stiff model (the K13 crack, whose relaxation can be 1e8 times faster than the
 // collision) supplies its right-hand side, its analytic Jacobian (a finite-
-// difference one is not enough there, SPEC §4.2) and its event functions. Two
+// difference one is not enough there, docs/decisions.md D9) and its event functions. Two
 // engines integrate it behind one interface:
 //   - RODAS (rodas_integrator.hpp), our own fixed-size Rosenbrock method, the default;
 //   - SUNDIALS CVODE (cvode_integrator.hpp), BDF with a dense direct solver.

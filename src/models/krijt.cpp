@@ -70,7 +70,7 @@ InitialContact krijt_initial_contact(const KrijtParameters& p) {  // K13 appendi
   // (B.1): at delta = 0, beta = E* a^3 / (2 pi R^2 gamma), so a = (2 pi R^2 beta gamma / E*)^{1/3}.
   auto radius = [&](double beta) { return std::cbrt(2.0 * pi * r2 * beta * p.surface_energy / p.effective_modulus); };
   InitialContact c;
-  const double beta0 = 1.01 * p.k;  // "1.01 k beta" of K13 read as G_eff = 1.01 k gamma (SPEC §4.2)
+  const double beta0 = 1.01 * p.k;  // "1.01 k beta" of K13 read as G_eff = 1.01 k gamma (docs/decisions.md D8)
   c.contact_radius = radius(beta0);
   // t = int da / a' with da = a dbeta / (3 beta) and a' = c f(beta): substitute beta = k + (beta0 - k) s^2
   // so that the integrand (which vanishes like f^-1 at beta = k) is smooth.

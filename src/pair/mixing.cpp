@@ -32,7 +32,7 @@ double hertz_constant(double effective_modulus, double effective_radius) {  // B
   return 4.0 / 3.0 * effective_modulus * std::sqrt(effective_radius);
 }
 
-double combined_surface_energy(double gamma1, double gamma2) {  // K13 footnote 8, SPEC §1
+double combined_surface_energy(double gamma1, double gamma2) {  // K13 footnote 8, docs/decisions.md D2
   return std::sqrt(gamma1 * gamma2);
 }
 

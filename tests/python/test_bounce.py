@@ -54,7 +54,7 @@ def test_oblique_equals_cli():
     c = cli("collide", "--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6", "--friction", "0.014142",
             "--asperity", "1e-6", "--velocity", "1", "--tangential-velocity", "0.01")
     assert r["cor_tangential"] == c["cor_tangential"]
-    assert r["cor_tangential"] == pytest.approx(-1.1331, abs=1e-4)  # SPEC §5's check
+    assert r["cor_tangential"] == pytest.approx(-1.1331, abs=1e-4)  # docs/decisions.md D12's check
 
 
 def test_sticking_equals_cli():

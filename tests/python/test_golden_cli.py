@@ -1,6 +1,6 @@
 """The CLI's outputs for the fixed calls of tests/golden/calls.txt, as recorded.
 
-The record was taken before the architecture change of issue 12 and is updated only with a
+The record was taken before the architecture change (docs/architecture.md) and is updated only with a
 change that is listed and justified (docs/architecture.md, "Behaviour kept"). Text must
 match exactly; numbers to a relative 1e-9: the same code on another x86-64 machine may take
 another path through glibc's libm (FMA variants), and adaptive integration turns a last-bit

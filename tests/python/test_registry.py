@@ -1,4 +1,4 @@
-"""Every model of the registry from Python (issue 12): each parameter reachable, results equal
+"""Every model of the registry from Python (docs/architecture.md): each parameter reachable, results equal
 to the CLI's (the same JSON keys and values), and a keyword a model does not take refused.
 
 The models and their parameters are read from the registry (bounce.models()), so a model

@@ -61,7 +61,7 @@ struct NormalTable {
 };
 
 /// eps^T(g^N, g^T) of the asperity law (published form, BSHP96 (35) in the history form
-/// of SPEC §5) for a non-adhesive force-law normal model. Between breaks the tangential
+/// of docs/decisions.md D11) for a non-adhesive force-law normal model. Between breaks the tangential
 /// motion is linear, p'' = -K(tau) p (docs/tables.md), so the table holds its
 /// fundamental solutions y1, y2 (and y1', y2', K, dK/ds) on nodes in s = sqrt(tau/tau_end)
 /// for rows equally spaced in ln g^N; a lookup interpolates the rows (Lagrange, `order`

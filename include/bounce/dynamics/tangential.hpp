@@ -7,7 +7,7 @@
 // * asperity law, BSHP96 (27)-(37): F^T = -mu F^N (zeta - zeta_a)/zeta0, the anchor
 //   zeta_a reset to zeta whenever |zeta - zeta_a| reaches zeta0 (an asperity breaks
 //   and the stored energy is lost). For monotonic zeta this is (35) with its floor;
-//   the history form also holds when zeta reverses (SPEC §5). The Coulomb limit (36)
+//   the history form also holds when zeta reverses (docs/decisions.md D11). The Coulomb limit (36)
 //   |F^T| <= mu F^N holds by construction.
 // * its passive variant: the asperity spring keeps its stored energy E_s, not its
 //   extension, when its stiffness k = mu F^N / zeta0 changes: F^T = sqrt(k) u with

@@ -74,7 +74,7 @@ std::unique_ptr<NormalForceModel> make_power_law_force(const PowerLawParameters&
 /// BP04's quasi-static estimate for adhesive viscoelastic spheres (§8.2.3):
 ///   F_el  = rho xi^{3/2} - C xi^{3/4},  C = sqrt(6 pi gamma / D) R_eff^{3/4}        (8.56)
 ///   F_dis = (3/2) A rho sqrt(xi) xi' + (3/4) B C xi' xi^{-1/4}                       (8.57)
-/// with B of (8.58) as corrected in SPEC §4.1. The xi^{-1/4} term is integrable but
+/// with B of (8.58) as corrected in docs/decisions.md D7. The xi^{-1/4} term is integrable but
 /// singular: the contact starts and ends at xi = cutoff_fraction * xi0 (footnote 2).
 struct AdhesiveViscoelasticParameters {
   double rho = 0.0;              ///< Hertz constant [N/m^{3/2}]

@@ -13,7 +13,7 @@ namespace bounce {
 
 class MaterialTable {
  public:
-  /// The built-in table: K13 table 2 plus `ice-bshp96` (SPEC §7 names).
+  /// The built-in table: K13 table 2 plus `ice-bshp96` (docs/materials.md).
   static const MaterialTable& builtin();
   /// Parse a TOML file; every entry is validated. Throws InvalidArgument naming
   /// the file, entry and key on any malformed, partial or out-of-range entry.

@@ -1,6 +1,6 @@
 #pragma once
 // Mixing rules: every pair quantity as one named function, shared by all models
-// (SPEC §1). An infinite radius or mass stands for a wall; an infinite Young's
+// (docs/decisions.md D1, D2). An infinite radius or mass stands for a wall; an infinite Young's
 // modulus for an ideally rigid body.
 
 namespace bounce {
@@ -24,7 +24,7 @@ double hertz_constant(double effective_modulus, double effective_radius);
 
 /// Combined work of adhesion of two surfaces from the per-material table values:
 /// gamma = sqrt(gamma_L1 gamma_L2) (K13 footnote 8: 2 sqrt(g1 g2) of free energies
-/// g_i = gamma_Li / 2); like materials give gamma_L. SPEC §1.
+/// g_i = gamma_Li / 2); like materials give gamma_L. docs/decisions.md D2.
 double combined_surface_energy(double gamma1, double gamma2);
 
 /// Mass of a homogeneous sphere, (4/3) pi R^3 density.

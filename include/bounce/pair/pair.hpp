@@ -2,7 +2,7 @@
 // Bodies and the colliding pair. Body 1 is a sphere; body 2 is a sphere or a
 // flat wall (infinite radius and mass). A wall is elastic and of body 2's
 // material (which defaults to body 1's); an ideally rigid wall is an explicit
-// choice (SPEC §1).
+// choice (docs/decisions.md D1).
 
 #include <optional>
 #include <string>

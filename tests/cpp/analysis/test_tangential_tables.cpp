@@ -97,10 +97,10 @@ TEST(TangentialTables, OtherModelsAndAsperitySizes) {
   }
 }
 
-// SPEC §5's independent check read from the table: eps^T = -1.1331 (published form).
+// docs/decisions.md D12's independent check read from the table: eps^T = -1.1331 (published form).
 TEST(TangentialTables, ReproducesTheIndependentCheck) {
   const TangentialTable t = build_tangential_table(bshp96(), asperity(2e-4), 0.5, 2.0, 1e-3, 0.1);
-  EXPECT_NEAR(t.cor(1.0, 0.01), -1.1331, 5e-5);  // SPEC §5 prints 4 decimals
+  EXPECT_NEAR(t.cor(1.0, 0.01), -1.1331, 5e-5);  // D12 states 4 decimals
   EXPECT_EQ(t.breaks(1.0, 0.01), 0);
 }
 

@@ -49,7 +49,7 @@ TEST(MasterCurve, LimitsAndMonotonicity) {
   }
 }
 
-// SPEC §3: the force rule never gives less than the overlap rule; the two agree as
+// docs/decisions.md D5: the force rule never gives less than the overlap rule; the two agree as
 // kappa -> 0, their difference being kappa^{5/2} (32/(75 sqrt 5) + O(kappa)).
 TEST(MasterCurve, ForceRuleAboveOverlapRule) {
   for (double log_k = -6.0; log_k <= 9.0; log_k += 0.05) {

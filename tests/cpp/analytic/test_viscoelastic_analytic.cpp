@@ -71,7 +71,7 @@ TEST(ViscoelasticAnalytic, PadeReproducesBp04) {
 }
 
 // bounce's series: a1 = 1 and a2 = 3/5 exact; a3, a4 fitted to the master curve. BP04's
-// "rigorous" a3 = 0.315, a4 = 0.161 are far outside their uncertainties (SPEC §3 known issue).
+// "rigorous" a3 = 0.315, a4 = 0.161 are far outside their uncertainties (docs/decisions.md D6).
 TEST(ViscoelasticAnalytic, SeriesCoefficients) {
   const IntegerSeries s = master_series_overlap();
   ASSERT_GE(s.a.size(), 4u);

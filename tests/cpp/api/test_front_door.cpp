@@ -59,7 +59,7 @@ api::Inputs steel(api::Inputs more) {
 
 }  // namespace
 
-// Acceptance (issue 12): a toy normal-force model registered as one row (in this test
+// docs/architecture.md, "Adding a model": a toy normal-force model registered as one row (in this test
 // binary only) collides through the front door, with no other edit, and its COR is the
 // exact one of a damped linear oscillator to the integration tolerance (1e-12: the
 // default tolerance of direct integration, in the scaled units).

@@ -1,4 +1,4 @@
-// CLI contract for the adhesive models: collide, curve, sticking (SPEC §7) and bad input.
+// CLI contract for the adhesive models: collide, curve, sticking (docs/cli.md) and bad input.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 

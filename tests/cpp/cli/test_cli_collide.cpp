@@ -1,4 +1,4 @@
-// CLI contract of `bounce collide`, `bounce curve` and `bounce analytic` (SPEC §7).
+// CLI contract of `bounce collide`, `bounce curve` and `bounce analytic` (docs/cli.md).
 #include <cmath>
 #include <sstream>
 

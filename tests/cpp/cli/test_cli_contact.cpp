@@ -1,4 +1,4 @@
-// The CLI contract of `bounce materials` and `bounce contact` (SPEC §7), and the
+// The CLI contract of `bounce materials` and `bounce contact` (docs/cli.md), and the
 // bad-input rule: exit code 2, one line naming the parameter, its value and the
 // allowed range, nothing on stdout, no stack trace, never NaN.
 #include <cmath>

@@ -1,4 +1,4 @@
-// The CLI's options come from the registry (issue 12): every model's options are there,
+// The CLI's options come from the registry (docs/architecture.md): every model's options are there,
 // and every option a chosen model or command does not use is refused with exit 2 naming
 // it (the one-line rule), for each model.
 #include <set>

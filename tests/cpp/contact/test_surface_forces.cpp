@@ -42,7 +42,7 @@ TEST(SurfaceForces, TaborParameters) {
   const double R = 0.5e-6, e = 3.7e9, gamma = 0.37, z0 = 0.2e-9;
   const double mu = tabor_parameter(R, e, gamma, z0);
   EXPECT_NEAR(mu, std::cbrt(R * gamma * gamma / (e * e * z0 * z0 * z0)), 1e-15 * mu);
-  // SPEC §1: BP04's (8.55) is smaller than K13's (11) by 4^{1/3}.
+  // docs/decisions.md D3: BP04's (8.55) is smaller than K13's (11) by 4^{1/3}.
   EXPECT_NEAR(mu / tabor_parameter_bp04(R, e, gamma, z0), std::cbrt(4.0), 1e-14);
   // lambda = 2 sigma0 (9R/(16 pi gamma E*^2))^{1/3} with sigma0 = 16 gamma/(9 sqrt3 z0):
   // lambda / mu = (32/(9 sqrt 3)) (9/(16 pi))^{1/3} = 1.15705...

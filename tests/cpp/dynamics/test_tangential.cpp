@@ -1,4 +1,4 @@
-// Oblique collisions (BSHP96 §II B, SPEC §5): the asperity law in its published and
+// Oblique collisions (BSHP96 §II B, docs/decisions.md D11-D13): the asperity law in its published and
 // passive forms, the step law, dense breaking, and BSHP96 fig. 2's regimes. The pair is
 // BSHP96 §III's: ice spheres E = 10 GPa, nu = 0.3, R = 1 cm, rho = 1000 kg/m^3, with
 // A = 1 us; mu = sqrt(zeta0 / R_eff) (alpha = 1).
@@ -53,7 +53,7 @@ double cor_t(double gn, double gt, const models::TangentialModel& t) { return ob
 
 }  // namespace
 
-// SPEC §5's independent check of the published form: eps^T = -1.13 for zeta0 = 2e-4 R_eff,
+// docs/decisions.md D12's independent check of the published form: eps^T = -1.13 for zeta0 = 2e-4 R_eff,
 // g^N = 1 m/s, g^T = 0.01 m/s (below -1: the energy caveat). The normal motion is the
 // head-on one (it does not feel F^T): the same eps^N as without tangential motion.
 TEST(Tangential, PublishedFormReproducesTheIndependentCheck) {

@@ -1,4 +1,4 @@
-// Pair quantities and mixing rules (SPEC §1).
+// Pair quantities and mixing rules (docs/decisions.md D1, D2).
 #include <cmath>
 #include <limits>
 #include <numbers>
