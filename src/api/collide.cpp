@@ -18,8 +18,8 @@ namespace {
 void check_oblique(const detail::Bound& b) {
   if (b.own.real("tangential_velocity").value_or(0.0) > 0.0) return;
   detail::refuse_given(b.model_parameters, detail::tangential_names,
-                       "a tangential velocity too (tangential_velocity): it is the tangential law of an oblique "
-                       "collision");
+                       "a tangential velocity g^T > 0 too (tangential_velocity; without it, or with 0, the "
+                       "collision is head-on): it is the tangential law of an oblique collision");
 }
 
 // How to collide: the model's numerical settings and the command's own (tangential

@@ -93,3 +93,21 @@ TEST(CliOptions, CommandsRefuseUnusedOptions) {
   expect_rejected({"contact", "--material", "steel", "--radius", "1e-3", "--log"}, "--log", "true");
   expect_rejected(with({"collide", "--velocity", "1", "--json", "--csv"}), "--csv", "given");
 }
+
+// Options no parameter of the command stands for: CLI11 leaves them over; the message
+// follows the same rule and names the commands that take the option.
+TEST(CliOptions, OptionsOfOtherCommandsNameTheirCommands) {
+  const std::vector<std::string> ice = {"--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6"};
+  auto with = [&](const std::string& command, std::vector<std::string> args) {
+    args.insert(args.begin(), ice.begin(), ice.end());
+    args.insert(args.begin(), command);
+    return args;
+  };
+  expect_rejected(with("collide", {"--velocity", "1", "--force", "3"}), "--force", "3");
+  expect_rejected(with("collide", {"--velocity", "1", "--force=3"}), "--force", "3");
+  expect_rejected({"contact", "--material", "steel", "--radius", "1e-3", "--velocity", "1"}, "--velocity", "1");
+  expect_rejected(with("collide", {"--velocity", "1", "--no-such-option"}), "--no-such-option", "(given)");
+  expect_rejected(with("collide", {"--velocity", "1", "stray"}), "argument", "stray");
+  const auto r = run_cli(with("collide", {"--velocity", "1", "--force", "3"}));
+  EXPECT_NE(r.err.find("commands that take it: contact"), std::string::npos) << r.err;
+}
