@@ -45,13 +45,13 @@ class DmtLaw final : public ContactLaw {
 
   ContactPoint at_force(double force) const override {
     const double f_c = dmt::pull_off_force(p_);
-    require_at_least("force", force, f_c, "force >= the DMT pull-off force " + format_value(f_c) + " N");
+    require_at_least("force", force, f_c, "force >= the DMT pull-off force ", " N");
     const double overlap = dmt::overlap_from_force(p_, force);
     return {dmt::contact_radius(p_, overlap), overlap, force};
   }
 
   ContactPoint at_overlap(double overlap) const override {
-    require_at_least("overlap", overlap, 0.0, "overlap >= 0 m (DMT keeps the Hertz geometry)");
+    require_at_least("overlap", overlap, 0.0, "overlap >= ", " m (DMT keeps the Hertz geometry)");
     return {dmt::contact_radius(p_, overlap), overlap, dmt::force(p_, overlap)};
   }
 

@@ -52,13 +52,13 @@ class HertzLaw final : public ContactLaw {
   std::string_view name() const override { return "hertz"; }
 
   ContactPoint at_force(double force) const override {
-    require_at_least("force", force, 0.0, "force >= 0 N (hertz has no adhesion)");
+    require_at_least("force", force, 0.0, "force >= ", " N (hertz has no adhesion)");
     const double overlap = hertz::overlap_from_force(rho_, force);
     return {hertz::contact_radius(radius_, overlap), overlap, force};
   }
 
   ContactPoint at_overlap(double overlap) const override {
-    require_at_least("overlap", overlap, 0.0, "overlap >= 0 m (hertz spheres touch only for overlap >= 0)");
+    require_at_least("overlap", overlap, 0.0, "overlap >= ", " m (hertz spheres touch only for overlap >= 0)");
     return {hertz::contact_radius(radius_, overlap), overlap, hertz::force(rho_, overlap)};
   }
 

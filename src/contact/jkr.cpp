@@ -134,7 +134,7 @@ class JkrLaw final : public ContactLaw {
 
   ContactPoint at_force(double force) const override {
     const double f_c = jkr::pull_off_force(p_);
-    require_at_least("force", force, f_c, "force >= the JKR pull-off force " + format_value(f_c) + " N");
+    require_at_least("force", force, f_c, "force >= the JKR pull-off force ", " N");
     const double a = jkr::contact_radius_from_force(p_, force);
     return {a, jkr::overlap(p_, a), force};
   }
@@ -142,7 +142,7 @@ class JkrLaw final : public ContactLaw {
   ContactPoint at_overlap(double overlap) const override {
     const double delta_c = jkr::separation_overlap(p_);
     require_at_least("overlap", overlap, delta_c,
-                     "overlap >= " + format_value(delta_c) + " m (JKR contact breaks at more negative overlap)");
+                     "overlap >= ", " m (JKR contact breaks at more negative overlap)");
     const double a = jkr::contact_radius_from_overlap(p_, overlap);
     return {a, overlap, jkr::force(p_, a)};
   }

@@ -193,14 +193,14 @@ class MaugisLaw final : public ContactLaw {
 
   ContactPoint at_force(double force) const override {
     const double f_c = curve_->pull_off().force * scales_.force;
-    require_at_least("force", force, f_c, "force >= the Maugis-Dugdale pull-off force " + format_value(f_c) + " N");
+    require_at_least("force", force, f_c, "force >= the Maugis-Dugdale pull-off force ", " N");
     return to_si(curve_->at_force(std::max(force / scales_.force, curve_->pull_off().force)));
   }
 
   ContactPoint at_overlap(double overlap) const override {
     const double delta_c = curve_->min_overlap().overlap * scales_.overlap;
     require_at_least("overlap", overlap, delta_c,
-                     "overlap >= " + format_value(delta_c) + " m (Maugis-Dugdale contact breaks at more negative overlap)");
+                     "overlap >= ", " m (Maugis-Dugdale contact breaks at more negative overlap)");
     return to_si(
         curve_->at_overlap(std::max(overlap / scales_.overlap, curve_->min_overlap().overlap)));
   }

@@ -45,9 +45,11 @@ double require_non_negative(std::string_view parameter, double value, std::strin
   return value;
 }
 
-double require_at_least(std::string_view parameter, double value, double lowest, std::string_view allowed) {
+double require_at_least(std::string_view parameter, double value, double lowest, std::string_view before,
+                        std::string_view after) {
   if (!std::isfinite(value) || value < lowest) {
-    throw InvalidArgument(std::string(parameter), format_value(value), std::string(allowed));
+    throw InvalidArgument(std::string(parameter), format_value(value),
+                          fmt::format("{}{}{}", before, format_value(lowest), after));
   }
   return value;
 }

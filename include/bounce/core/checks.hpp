@@ -20,9 +20,11 @@ double require_finite(std::string_view parameter, double value);
 double require_positive(std::string_view parameter, double value, std::string_view what);
 /// value must be finite and >= 0.
 double require_non_negative(std::string_view parameter, double value, std::string_view what);
-/// value must be finite and >= lowest; `allowed` says so in words ("force >= the JKR
-/// pull-off force -1.2e-06 N").
-double require_at_least(std::string_view parameter, double value, double lowest, std::string_view allowed);
+/// value must be finite and >= lowest; the message says so in words, `before` lowest
+/// `after` ("force >= the JKR pull-off force " -1.2e-06 " N"). The words are joined only
+/// when the check fails: the contact laws call this once per evaluation (bench_contact).
+double require_at_least(std::string_view parameter, double value, double lowest, std::string_view before,
+                        std::string_view after);
 /// value must be finite and lo < value < hi.
 double require_open_interval(std::string_view parameter, double value, double lo, double hi,
                              std::string_view what);
