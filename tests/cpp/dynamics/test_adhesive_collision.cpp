@@ -276,3 +276,28 @@ TEST(AdhesionValidity, Bp04Condition) {
   const Pair clean = Pair::identical(MaterialTable::builtin().at("ice-bshp96"), 2e-6);
   EXPECT_FALSE(has_warning(clean, 1.0));
 }
+
+// A sticking collision stops when sticking is certain: at 0.1 m/s (2 um ice, T_vis =
+// 1e-11 s) after 2.6e-17 s, long before the maximum compression. The validity conditions
+// (BSHP96 (B12), K13 (A.2)) are about how fast the contact changes, so they compare with
+// the elastic Hertz contact time there (3.3e-8 s), not with that stopping time: T_vis =
+// 1e-11 s is << 0.1 of it, and 1e-2 nu^2 t_H = 2.1e-11 s > T_vis (nu^2 = T_vis/A = 1/16).
+TEST(AdhesionValidity, StickingComparesWithTheHertzTime) {
+  const Pair pair = Pair::identical(ice(), 2e-6);
+  const auto out = collide(pair, bounce::testing::model(pair, "krijt", {{"tvis", 1e-11}}), 0.1);
+  ASSERT_EQ(out.outcome, Outcome::stick);
+  const double t_h = analytic::hertz_contact_time(pair.hertz_constant(), pair.effective_mass(), 0.1);
+  ASSERT_LT(out.contact_time, 1e-6 * t_h);
+  for (const auto& w : out.warnings) {
+    EXPECT_EQ(w.find("(B12)"), std::string::npos) << w;
+    EXPECT_EQ(w.find("(A.2)"), std::string::npos) << w;
+  }
+  // A bounce keeps its own contact time (2 um ice, A = 2e-9 s: a contact time near 1e-8 s).
+  const auto bounced = collide(pair, bounce::testing::viscoelastic(pair, 2e-9), 5.0);
+  ASSERT_EQ(bounced.outcome, Outcome::bounce);
+  bool b12 = false;
+  for (const auto& w : bounced.warnings) {
+    b12 = b12 || (w.find("(B12)") != std::string::npos && w.find("the contact time") != std::string::npos);
+  }
+  EXPECT_TRUE(b12) << ::testing::PrintToString(bounced.warnings);
+}
