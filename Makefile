@@ -45,6 +45,7 @@ check-long: deps
 	cd $(BUILD_DIR) && ctest --output-on-failure -L long
 
 lint: build
+	@./scripts/install-deps.sh clang-tidy
 	$(PYTHON) tools/check_layers.py
 	./tools/check_sizes.sh $(BUILD_DIR)
 

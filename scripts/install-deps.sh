@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Install the Debian packages bounce needs, only those that are missing.
 # Uses sudo when not root. Safe to run repeatedly (a no-op when all are present).
+# Extra packages for one target come as arguments (`make lint`: clang-tidy).
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,7 @@ packages=(
   nlohmann-json3-dev libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3 python3-dev python3-numpy python3-matplotlib
   python3-scipy python3-pytest
+  "$@"
 )
 
 missing=()
