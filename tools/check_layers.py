@@ -4,10 +4,13 @@
     core -> pair -> contact -> models -> dynamics -> analytic -> analysis -> api -> (apps | python)
 
 A file belongs to the layer of its folder: include/bounce/<layer>/, src/<layer>/, apps/bounce
-(the CLI) or python/src (the bindings). Every `#include "..."` is resolved: "bounce/<layer>/..."
-names its layer; any other quoted include is looked up next to the including file (a private
-header of the same or another layer). An edge may go to the same layer or to one below it,
-never up, and the two front ends (apps, python) may not include each other.
+(the CLI) or python/src (the bindings). Every `#include "..."` and `#include <bounce/...>` is
+resolved: "bounce/<layer>/..." names its layer; any other quoted include is looked up next
+to the including file, then anywhere in the layer folders (a private include directory such
+as src/analytic makes a bare name compile from elsewhere); one found nowhere is a system or
+generated header and no edge. An edge may go to the same layer or to one below it, never
+up; the two front ends (apps, python) may not include each other, nor the library's private
+headers under src/ (only its public include/bounce/).
 
     check_layers.py [REPO]     exit 0 and "layers: N edges, all downward", or 1 and the offending edges
 """
@@ -17,7 +20,7 @@ import sys
 
 ORDER = ["core", "pair", "contact", "models", "dynamics", "analytic", "analysis", "api"]
 FRONT_ENDS = {"apps": "apps/bounce", "python": "python/src"}
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+INCLUDE = re.compile(r'^\s*#\s*include\s+(?:"([^"]+)"|<(bounce/[^>]+)>)', re.M)
 
 
 def layer_of(repo, path):
@@ -52,20 +55,37 @@ def sources(repo):
                     yield os.path.join(folder, f)
 
 
+def find_anywhere(repo, included):
+    """A quoted include that is not next to its file: the layer folder that holds it, if any."""
+    for root in ["src"] + list(FRONT_ENDS.values()):
+        for folder, _, files in os.walk(os.path.join(repo, root)):
+            candidate = os.path.normpath(os.path.join(folder, included))
+            if os.path.exists(candidate):
+                return candidate
+    return None
+
+
 def edges(repo, path):
-    """(included text, target layer) for every include of `path` that lands in a layer."""
+    """(included text, target layer, target path) for every include of `path` that lands in a layer."""
     with open(path, encoding="utf-8") as f:
         text = f.read()
-    for included in INCLUDE.findall(text):
+    for quoted, angled in INCLUDE.findall(text):
+        included = quoted or angled
         if included.startswith("bounce/"):
             target = os.path.join(repo, "include", included)
-        else:
-            target = os.path.normpath(os.path.join(os.path.dirname(path), included))
-        layer = layer_of(repo, target) if os.path.exists(target) or included.startswith("bounce/") else None
-        if layer is None and included.startswith("bounce/"):
-            layer = included.split("/")[1]  # a header that does not exist is still an edge
+            layer = layer_of(repo, target) or included.split("/")[1]  # a missing header is still an edge
+            yield included, layer, target
+            continue
+        target = os.path.normpath(os.path.join(os.path.dirname(path), included))
+        if not os.path.exists(target):
+            target = find_anywhere(repo, included)
+        layer = layer_of(repo, target) if target else None
         if layer is not None:
-            yield included, layer
+            yield included, layer, target
+
+
+def private(repo, target):
+    return os.path.relpath(target, repo).replace(os.sep, "/").startswith("src/")
 
 
 def main():
@@ -75,15 +95,18 @@ def main():
         source = layer_of(repo, path)
         if source is None:
             continue
-        for included, target in edges(repo, path):
+        for included, target, target_path in edges(repo, path):
             count += 1
+            where = os.path.relpath(path, repo)
             if target not in ORDER and target not in FRONT_ENDS:
-                bad.append(f"{os.path.relpath(path, repo)}: \"{included}\" is in no layer ({target})")
+                bad.append(f"{where}: \"{included}\" is in no layer ({target})")
             elif not allowed(source, target):
-                bad.append(f"{os.path.relpath(path, repo)} ({source}) includes \"{included}\" ({target}): up the layers")
+                bad.append(f"{where} ({source}) includes \"{included}\" ({target}): up the layers")
+            elif source in FRONT_ENDS and private(repo, target_path):
+                bad.append(f"{where} ({source}) includes \"{included}\", a private header of the library")
     if bad:
         print("\n".join(bad))
-        print(f"layers: {len(bad)} of {count} edges run up the order {' -> '.join(ORDER)}")
+        print(f"layers: {len(bad)} of {count} edges break the order {' -> '.join(ORDER)} -> apps | python")
         return 1
     print(f"layers: {count} edges, all downward ({' -> '.join(ORDER)} -> apps | python)")
     return 0

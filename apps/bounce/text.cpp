@@ -56,7 +56,7 @@ std::string collide_text(const Record& out) {
   s += fmt::format("cor          e   = {:.12g}\noutcome          = {}\n", num(out, "cor"), str(out, "outcome"));
   if (out.contains("tangential")) s += tangential_line(out.at("tangential").record());
   s += fmt::format("contact time t_c = {:.6g} s{}\nmax overlap      = {:.6g} m\n", num(out, "contact_time"),
-                   stuck ? " (when sticking became certain)" : "", num(out, "max_overlap"));
+                   stuck ? " (sticking: when it became certain, or the end of --follow)" : "", num(out, "max_overlap"));
   if (out.contains("merged")) s += merged_line(out.at("merged").record());
   const Record& e = out.at("energy").record();
   s += fmt::format(

@@ -2,6 +2,10 @@
 // Private: what the two adhesive engines (krijt_collision.cpp, jkr_viscoelastic_collision.cpp)
 // share: how a collision ends, in energy and outcome.
 
+#include <string>
+
+#include <fmt/format.h>
+
 #include "bounce/contact/independent.hpp"
 #include "bounce/dynamics/outcome.hpp"
 #include "bounce/models/krijt.hpp"
@@ -12,6 +16,16 @@ namespace bounce::dynamics::detail {
 inline constexpr const char* before_max_compression_note =
     "sticking was certain before the maximum compression: max_overlap is the overlap at that time (--follow "
     "integrates the settling)";
+
+/// What a followed sticking collision says about its end (`--follow T`): it ran to T, or,
+/// when the outcome was still open at T, on until sticking became certain.
+inline std::string followed_note(double follow_time, double end) {
+  if (end <= follow_time * (1.0 + 1e-9)) {
+    return fmt::format("followed until {:.6g} s without breaking off: contact_time is that end", end);
+  }
+  return fmt::format("the outcome was still open at the followed time {:.6g} s: integrated on until sticking "
+                     "became certain at {:.6g} s (contact_time)", follow_time, end);
+}
 
 /// The end of an adhesive collision with contact radius a, approach delta and scaled rate
 /// v = delta'/g (the bulk and crack dissipation already in out.energy). A break releases

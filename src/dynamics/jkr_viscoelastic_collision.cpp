@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "adhesive_outcome.hpp"
 #include "bounce/contact/jkr.hpp"
 #include "bounce/dynamics/adhesive_collision.hpp"
@@ -49,7 +51,7 @@ class JkrBranch {
 };
 
 // The events of the collision (their ids).
-enum JkrEvent : int { max_compression, release, sticks };
+enum JkrEvent : int { max_compression, release, sticks, end_of_follow };
 
 class JkrViscoelastic {
  public:
@@ -61,7 +63,9 @@ class JkrViscoelastic {
  private:
   // (U_K + U_E + U_S) minus its value at the fold: below 0 the grains can never separate.
   double mechanical_minus_release(const State& y) const;
-  std::vector<detail::Event<3>> events() const;
+  std::vector<detail::Event<3>> events(bool following) const;
+  detail::IntegrationResult<3> go_on_after_follow(detail::IntegrationResult<3> followed, IntegrationSettings settings,
+                                                  const detail::StepObserver<3>* observer) const;
   TrajectorySample sample(double t, const State& y) const;
   detail::IntegrationResult<3> integrate();
   void finish(const detail::IntegrationResult<3>& result);
@@ -73,7 +77,6 @@ class JkrViscoelastic {
   const double delta_c_, snap_release_, release_energy_, t_hertz_;
   const bool follow_;
   CollisionOutcome out_;
-  bool followed_to_end_ = false;
 };
 
 JkrViscoelastic::JkrViscoelastic(const models::KrijtParameters& p, double speed, const AdhesiveCollisionOptions& options)
@@ -104,11 +107,15 @@ double JkrViscoelastic::mechanical_minus_release(const State& y) const {
   return y[1] * y[1] + models::contact_energy(p_, branch_.radius(delta), delta) / s_.energy - release_energy_;
 }
 
-std::vector<detail::Event<3>> JkrViscoelastic::events() const {
+std::vector<detail::Event<3>> JkrViscoelastic::events(bool following) const {
   std::vector<detail::Event<3>> e(3);
   e[0] = {max_compression, [](double, const State& y) { return y[1]; }, -1, false, true, -1};
   e[1] = {release, [this](double, const State& y) { return y[0] - delta_c_ / s_.length; }, -1, true, true, -1};
-  e[2] = {sticks, [this](double, const State& y) { return mechanical_minus_release(y); }, -1, !follow_, true, -1};
+  e[2] = {sticks, [this](double, const State& y) { return mechanical_minus_release(y); }, -1, !following, true, -1};
+  if (following) {  // the end of a followed collision, with the state there
+    const double end = options_.follow_time / s_.time;
+    e.push_back({end_of_follow, [end](double t, const State&) { return end - t; }, -1, true, true, -1});
+  }
   return e;
 }
 
@@ -133,7 +140,8 @@ detail::IntegrationResult<3> JkrViscoelastic::integrate() {
   IntegrationSettings settings;
   settings.relative_tolerance = settings.absolute_tolerance = options_.relative_tolerance * 1e-2;
   settings.max_steps = options_.max_steps;
-  settings.max_time = follow_ ? options_.follow_time / s_.time : 1e4 * t_hertz_;
+  // A followed run ends at its end_of_follow event; the budget lies beyond it.
+  settings.max_time = follow_ ? 2.0 * options_.follow_time / s_.time : 1e4 * t_hertz_;
   const double spacing = 2.0 * t_hertz_ / std::max(options_.trajectory_points, 1);
   double next_sample = 0.0;
   const detail::StepObserver<3> observer = [&](double t0, double t1, const auto& at) {
@@ -143,28 +151,42 @@ detail::IntegrationResult<3> JkrViscoelastic::integrate() {
   };
   const State start{0.0, 1.0, 0.0};
   if (options_.record_trajectory) out_.trajectory.push_back(sample(0.0, start));
-  detail::IntegrationResult<3> result;
   if (!follow_ && mechanical_minus_release(start) <= 0.0) {
-    result.terminal = {sticks, 0.0, start};  // bound from the snap-on on
-    return result;
+    detail::IntegrationResult<3> bound;
+    bound.terminal = {sticks, 0.0, start};  // bound from the snap-on on
+    return bound;
   }
-  auto e = events();
-  try {
-    return detail::integrate_until_event<3>(*this, start, 0.0, 1e-4 * t_hertz_, settings, e,
-                                            options_.record_trajectory ? &observer : nullptr);
-  } catch (const TimeBudgetExceeded&) {
-    if (!follow_) throw;
-    followed_to_end_ = true;
-  }
-  return result;
+  auto e = events(follow_);
+  const detail::StepObserver<3>* watch = options_.record_trajectory ? &observer : nullptr;
+  auto result = detail::integrate_until_event<3>(*this, start, 0.0, 1e-4 * t_hertz_, settings, e, watch);
+  return result.terminal.id == end_of_follow ? go_on_after_follow(std::move(result), settings, watch) : result;
+}
+
+// The followed time has come: with sticking certain (the energy below the release energy,
+// now or at a `sticks` hit) the run ends there; otherwise the outcome is still open (a time
+// shorter than the collision) and the run goes on as an unfollowed one until the grains
+// release or stick, with a fresh budget.
+detail::IntegrationResult<3> JkrViscoelastic::go_on_after_follow(detail::IntegrationResult<3> followed,
+                                                                 IntegrationSettings settings,
+                                                                 const detail::StepObserver<3>* observer) const {
+  const bool certain = mechanical_minus_release(followed.terminal.state) <= 0.0 ||
+                       std::any_of(followed.hits.begin(), followed.hits.end(),
+                                   [](const auto& hit) { return hit.id == sticks; });
+  if (certain) return followed;
+  const double t = followed.terminal.time;
+  settings.max_time = t + 1e4 * t_hertz_;
+  settings.max_steps = std::max(options_.max_steps - followed.steps, 1L);
+  auto e = events(false);
+  e[max_compression].armed = std::none_of(followed.hits.begin(), followed.hits.end(),
+                                          [](const auto& hit) { return hit.id == max_compression; });
+  auto rest = detail::integrate_until_event<3>(*this, followed.terminal.state, t, 1e-4 * t_hertz_, settings, e, observer);
+  rest.hits.insert(rest.hits.begin(), followed.hits.begin(), followed.hits.end());
+  rest.steps += followed.steps;
+  return rest;
 }
 
 void JkrViscoelastic::finish(const detail::IntegrationResult<3>& result) {
-  const auto& last = out_.trajectory;
-  const State end = followed_to_end_ && !last.empty()
-                        ? State{last.back().overlap / s_.length, last.back().rate / s_.speed,
-                                last.back().bulk_dissipated / s_.energy}
-                        : result.terminal.state;
+  const State& end = result.terminal.state;
   for (const auto& hit : result.hits) {
     if (hit.id == max_compression) {
       out_.max_overlap = hit.state[0] * s_.length;
@@ -172,13 +194,15 @@ void JkrViscoelastic::finish(const detail::IntegrationResult<3>& result) {
     }
   }
   out_.steps = result.steps;
-  out_.contact_time = followed_to_end_ ? options_.follow_time : result.terminal.time * s_.time;
-  if (result.hits.empty() && !followed_to_end_) {  // stopped before the maximum compression
+  out_.contact_time = result.terminal.time * s_.time;
+  if (follow_ && result.terminal.id != release) {
+    out_.notes.push_back(detail::followed_note(options_.follow_time, out_.contact_time));
+  } else if (result.hits.empty()) {  // stopped before the maximum compression
     out_.max_overlap = std::max(end[0], 0.0) * s_.length;
     out_.time_of_max_overlap = result.terminal.time * s_.time;
     out_.notes.push_back(detail::before_max_compression_note);
   }
-  const bool bounced = !followed_to_end_ && result.terminal.id == release;
+  const bool bounced = result.terminal.id == release;
   out_.energy.bulk_dissipated = end[2] * s_.energy;
   out_.energy.crack_dissipated = snap_release_;
   // Release at the fold: a drops to 0 at delta_c, U_E + U_S there is dissipated.

@@ -67,8 +67,9 @@ class KrijtEpisode {
 
  private:
   void run_phase();
-  bool take_step(detail::StiffIntegrator& integrator, const detail::SwappedIndependent& swapped, Phase& next);
+  void take_step(detail::StiffIntegrator& integrator, const detail::SwappedIndependent& swapped, Phase& next);
   void on_event(int event, detail::StiffIntegrator& integrator, Phase& next);
+  void end_of_follow();
   void record(const detail::StiffIntegrator& integrator, const detail::SwappedIndependent& swapped, double t_before,
               const detail::StiffIntegrator::Step& step);
   std::vector<double> state_at_time(const detail::StiffIntegrator& integrator,
@@ -80,9 +81,11 @@ class KrijtEpisode {
   const AdhesiveCollisionOptions& options_;
   const Scales s_;
   const models::InitialContact start_;
-  const bool follow_;
+  const bool follow_;      // the user asked to follow the collision to a time
+  bool following_;         // ... and that time has not come yet
   KrijtSystem system_;
   detail::StiffSettings settings_;
+  double t_hertz_ = 0.0;  // K13 (22), scaled
   double time_limit_ = 0.0, spacing_ = 0.0, next_sample_ = 0.0;
   CollisionOutcome out_;
   std::vector<double> y_;
@@ -90,16 +93,19 @@ class KrijtEpisode {
   long steps_ = 0;
   bool compressed_ = false;  // the maximum compression was passed
   bool ended_ = false;
+  bool broke_ = false;          // the contact broke off (the only way a collision bounces)
+  bool stick_certain_ = false;  // the energy fell below what a separation needs
+  bool restart_ = false;        // the time limit moved: the phase restarts with a new budget
   Phase phase_ = Phase::time;
 };
 
 KrijtEpisode::KrijtEpisode(const models::KrijtParameters& p, double speed, const AdhesiveCollisionOptions& options)
     : p_(p), options_(options), s_(detail::scales_for(p, speed)), start_(models::krijt_initial_contact(p)),
-      follow_(options.follow_time > 0.0), system_(p, s_, !follow_, options.break_margin) {
+      follow_(options.follow_time > 0.0), following_(follow_), system_(p, s_, true, options.break_margin) {
   y_ = {0.0, 1.0, start_.contact_radius / s_.radius, start_.crack_dissipated / s_.energy, 0.0};
-  const double t_hertz = detail::scaled_hertz_time(p, speed, s_);
+  t_hertz_ = detail::scaled_hertz_time(p, speed, s_);
   t_ = start_.time / s_.time;
-  time_limit_ = follow_ ? options.follow_time / s_.time : 1e4 * t_hertz;
+  time_limit_ = follow_ ? options.follow_time / s_.time : 1e4 * t_hertz_;
   system_.set_time_limit(time_limit_);
   // The energies exchanged reach the adhesion energy 2 pi a_eq^2 gamma, which can exceed
   // the impact energy (the unit) by orders of magnitude in slow collisions: a relative
@@ -110,11 +116,12 @@ KrijtEpisode::KrijtEpisode(const models::KrijtParameters& p, double speed, const
   settings_.absolute_tolerance.assign(5, tolerance * 1e-2);
   settings_.event_directions.assign(KrijtSystem::event_count_, -1);
   out_.method = "integrate";
-  spacing_ = 2.0 * t_hertz / std::max(options.trajectory_points, 1);
+  spacing_ = 2.0 * t_hertz_ / std::max(options.trajectory_points, 1);
   next_sample_ = t_;
   if (options.record_trajectory) out_.trajectory.push_back(krijt_sample(p, s_, t_, y_));
   // Bound from the start: the formation already took more than the kinetic energy.
-  ended_ = !follow_ && system_.mechanical_energy(y_.data()) <= 0.0;
+  stick_certain_ = system_.mechanical_energy(y_.data()) <= 0.0;
+  ended_ = !following_ && stick_certain_;
   if (ended_) out_.outcome = Outcome::stick;
   phase_ = system_.physical(y_.data()).beta < detail::closing_exit ? Phase::closing : Phase::time;
 }
@@ -154,11 +161,15 @@ void KrijtEpisode::on_event(int event, detail::StiffIntegrator& integrator, Phas
       break;
     case KrijtSystem::breaks:
       out_.outcome = Outcome::bounce;
+      broke_ = true;
       ended_ = true;
       break;
-    case KrijtSystem::sticks:
-      out_.outcome = Outcome::stick;
-      ended_ = true;
+    case KrijtSystem::sticks:  // followed: on to the end time, then stick
+      stick_certain_ = true;
+      if (!following_) {
+        out_.outcome = Outcome::stick;
+        ended_ = true;
+      }
       break;
     case KrijtSystem::phase_change:
     case KrijtSystem::enters_opening:
@@ -167,25 +178,33 @@ void KrijtEpisode::on_event(int event, detail::StiffIntegrator& integrator, Phas
                                                      : Phase::opening;
       break;
     case KrijtSystem::time_limit:
-      if (!follow_) {
+      if (!following_) {
         throw TimeBudgetExceeded(fmt::format("the K13 collision lasted more than {:.3g} s without an outcome", t_ * s_.time));
       }
-      ended_ = true;
+      end_of_follow();
       break;
   }
 }
 
-// One step; false when the run ends without a step (a followed collision reached its end).
-bool KrijtEpisode::take_step(detail::StiffIntegrator& integrator, const detail::SwappedIndependent& swapped,
-                             Phase& next) {
-  detail::StiffIntegrator::Step step;
-  try {
-    step = integrator.step();
-  } catch (const TimeBudgetExceeded&) {
-    if (!follow_) throw;
-    ended_ = true;  // a followed collision reached its end time
-    return false;
+// The followed time has come. With sticking certain the run ends (stick); otherwise the
+// outcome is still open (a time shorter than the collision), and the run goes on as an
+// unfollowed one until the contact breaks or sticking is certain, with a fresh budget.
+void KrijtEpisode::end_of_follow() {
+  following_ = false;
+  if (stick_certain_) {
+    out_.outcome = Outcome::stick;
+    ended_ = true;
+    return;
   }
+  time_limit_ = t_ + 1e4 * t_hertz_;
+  system_.set_time_limit(time_limit_);
+  restart_ = true;
+}
+
+// One step, its samples and its events.
+void KrijtEpisode::take_step(detail::StiffIntegrator& integrator, const detail::SwappedIndependent& swapped,
+                             Phase& next) {
+  const detail::StiffIntegrator::Step step = integrator.step();
   const std::vector<double> z = integrator.state();
   const double t_before = t_;
   if (phase_ == Phase::time) {
@@ -197,7 +216,6 @@ bool KrijtEpisode::take_step(detail::StiffIntegrator& integrator, const detail::
   }
   if (options_.record_trajectory) record(integrator, swapped, t_before, step);
   for (int event : step.fired) on_event(event, integrator, next);
-  return true;
 }
 
 // The integration in the current phase until the phase changes or the episode ends.
@@ -209,7 +227,11 @@ void KrijtEpisode::run_phase() {
       phase_ == Phase::time ? static_cast<const detail::StiffSystem&>(system_) : swapped;
   std::vector<double> z = y_;
   double s0 = t_;
-  settings_.max_time = time_limit_;
+  // A followed run ends at its time_limit event (with the state there); the engine's own
+  // budget lies beyond it, or a step that lands on the event would throw before the event
+  // is handled and leave the state one step short. Unfollowed, both mean the same failure,
+  // and the budget stays where it was (CVODE's first step depends on it).
+  settings_.max_time = following_ ? 2.0 * time_limit_ : time_limit_;
   if (phase_ != Phase::time) {
     z[a_index] = t_;
     s0 = sign * y_[a_index];
@@ -219,20 +241,21 @@ void KrijtEpisode::run_phase() {
   const auto integrator = detail::make_stiff_integrator(options_.engine, equations, z, s0, settings_);
   if (compressed_) integrator->disable_event(KrijtSystem::max_compression);
   Phase next = phase_;
-  while (!ended_ && next == phase_ && take_step(*integrator, swapped, next)) {
-  }
+  restart_ = false;
+  while (!ended_ && !restart_ && next == phase_) take_step(*integrator, swapped, next);
   steps_ += integrator->steps();
   phase_ = next;
 }
 
 Episode KrijtEpisode::finish() {
-  if (!compressed_ && out_.outcome == Outcome::stick && !follow_) {  // stopped while still compressing
+  if (!compressed_ && out_.outcome == Outcome::stick) {  // stopped while still compressing
     out_.max_overlap = std::max(y_[0], 0.0) * s_.length;
     out_.time_of_max_overlap = t_ * s_.time;
     out_.notes.push_back(detail::before_max_compression_note);
   }
-  // A followed collision that never broke off is a sticking one.
-  if (follow_ && !(out_.outcome == Outcome::bounce && ended_)) out_.outcome = Outcome::stick;
+  // A followed collision that never broke off is a sticking one, also when it reached its
+  // end time still in contact (the outcome's default is no answer there).
+  if (follow_ && !broke_) out_.notes.push_back(detail::followed_note(options_.follow_time, t_ * s_.time));
   Episode episode;
   episode.final_overlap = y_[0] * s_.length;
   episode.final_rate = y_[1] * s_.speed;

@@ -3,13 +3,14 @@
 // what it takes and how it is made (the CLI's options and --help, Python's keywords and
 // type stubs and docs/models.md are generated from these rows).
 //
-// One keyword <-> one row <-> one factory <-> one file (src/models/<model>.cpp). A row
+// One keyword <-> one row <-> one factory, in the file of its physics (src/models/*.cpp:
+// hertz with viscoelastic, jkr-viscoelastic with krijt). A row
 // declares the model's own parameters; the registry adds the parameters every model shares
 // (contact_end, yield, the tangential law, method) and those its capabilities call for
 // (curvature radii for convex bodies; tolerance for force laws; adhesive_tolerance and
 // stiff_engine for the K13 engines). To add a model: write its file with a factory that
-// turns validated parameters into a Model (model.hpp), and add its row to the table in
-// src/models/registry.cpp (or, outside the library, model_registry().add(row)).
+// turns validated parameters into a Model (model.hpp), declare the factory in
+// src/models/factories.hpp and add its row to the table in src/models/registry.cpp (or, outside the library, model_registry().add(row)).
 
 #include <deque>
 #include <functional>

@@ -68,7 +68,7 @@ Check check(const TangentialTable& t, const models::Model& model, int n, unsigne
 
 }  // namespace
 
-// The acceptance: error <= 1e-6 against direct integration at 1e4 random points.
+// The stated bound (docs/tables.md): error <= 1e-6 against direct integration at 1e4 random points.
 // BSHP96 fig. 2 (b) (zeta0 = 2e-4 R_eff) over g^N 0.01-10 m/s, g^T 1e-3-1 m/s holds the
 // linear-spring plateau (no break), spin reversal (eps^T < 0), the jumps where one more
 // asperity breaks, and sliding with up to ~150 breaks. The points differ from the build's
