@@ -1,5 +1,6 @@
 #include "bounce/analysis/collide.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -187,6 +188,10 @@ Method parse_method(std::string_view text) {
 CollideOptions collide_options(const Parameters& p) {
   CollideOptions o;
   o.method = parse_method(p.text("method"));
+  if (o.method == Method::master) {
+    p.refuse_given(std::array{"tolerance"},
+                   "none with method master (the master curve is exact to 1e-10; tolerance is direct integration's)");
+  }
   if (const ParameterSpec* s = p.spec("tolerance"); s != nullptr) {
     o.integration.relative_tolerance = o.integration.absolute_tolerance = *p.real("tolerance");
   }

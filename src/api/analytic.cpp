@@ -31,9 +31,9 @@ void check(const Case& c, const analysis::ViscoelasticScales& s) {
     throw InvalidArgument(given ? "A" : "model", given ? "0" : c.model.name,
                           "A > 0 s (with A = 0 the collision is elastic: e = 1)");
   }
-  detail::refuse_given(c.model_parameters, std::array{"contact_end", "yield", "method", "tolerance"},
-                       "none with analytic: it gives both end rules, without plastic losses");
-  detail::refuse_given(c.model_parameters, detail::tangential_names, "none with analytic: BP04's forms are head-on");
+  c.model_parameters.refuse_given(std::array{"contact_end", "yield", "method", "tolerance"},
+                                  "none with analytic: it gives both end rules, without plastic losses");
+  c.model_parameters.refuse_given(detail::tangential_names, "none with analytic: BP04's forms are head-on");
 }
 
 Record series_values(double k, double q) {

@@ -26,9 +26,6 @@ Bound bind_inputs(const CommandSpec& command, const Inputs& inputs);
 /// checked in between, before the pair and the model are built).
 Case make_case(const Bound& bound, std::optional<double> radius = std::nullopt);
 
-/// Refuses the first of `names` that was given: the command does not use it (`why`).
-void refuse_given(const Parameters& p, std::span<const char* const> names, std::string_view why);
-
 /// "LO:HI:N" as N values (geometric with `log`); errors name `name`.
 std::vector<double> parse_range(const std::string& name, const std::string& text, bool log);
 /// "LO:HI" with 0 < LO < HI; errors name `name`.

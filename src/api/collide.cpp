@@ -17,9 +17,9 @@ namespace {
 // built, which would ask for the rest of the law first).
 void check_oblique(const detail::Bound& b) {
   if (b.own.real("tangential_velocity").value_or(0.0) > 0.0) return;
-  detail::refuse_given(b.model_parameters, detail::tangential_names,
-                       "a tangential velocity g^T > 0 too (tangential_velocity; without it, or with 0, the "
-                       "collision is head-on): it is the tangential law of an oblique collision");
+  b.model_parameters.refuse_given(detail::tangential_names,
+                                  "a tangential velocity g^T > 0 too (tangential_velocity; without it, or with 0, the "
+                                  "collision is head-on): it is the tangential law of an oblique collision");
 }
 
 // How to collide: the model's numerical settings and the command's own (tangential
@@ -31,13 +31,13 @@ analysis::CollideOptions collide_options(const Case& c) {
     o.record_trajectory = c.own.flag("trajectory");
     o.trajectory_points = static_cast<int>(*c.own.real("trajectory_points"));
     if (c.own.given("trajectory_points") && !o.record_trajectory) {
-      detail::refuse_given(c.own, std::array{"trajectory_points"}, "trajectory too (the samples of a trajectory)");
+      c.own.refuse_given(std::array{"trajectory_points"}, "trajectory too (the samples of a trajectory)");
     }
   }
   if (c.own.spec("follow") != nullptr && c.own.given("follow")) {
     if (!c.model.dynamic_contact) {
-      detail::refuse_given(c.own, std::array{"follow"},
-                           "a model with contact dynamics (krijt, jkr-viscoelastic): the others stop at separation");
+      c.own.refuse_given(std::array{"follow"},
+                         "a model with contact dynamics (krijt, jkr-viscoelastic): the others stop at separation");
     }
     o.follow_time = *c.own.real("follow");
   }
@@ -86,7 +86,7 @@ Sweep sweep_of(const Parameters& own) {
     if (s.values.front() <= 0.0) throw InvalidArgument("radii", own.text("radii"), "radii > 0 m (LO > 0)");
     s.velocity = own.require_real("velocity", "an impact velocity > 0 m/s with radii");
   } else {
-    detail::refuse_given(own, std::array{"velocity"}, "radii with it (a sweep over velocities has no fixed velocity)");
+    own.refuse_given(std::array{"velocity"}, "radii with it (a sweep over velocities has no fixed velocity)");
     s.values = detail::parse_range("velocities", own.text("velocities"), log);
     if (s.values.front() <= 0.0) {
       throw InvalidArgument("velocities", own.text("velocities"), "velocities > 0 m/s (LO > 0)");
@@ -178,8 +178,8 @@ Table collide_columns(const Inputs& inputs, const std::vector<double>& velocitie
   const detail::Bound bound = detail::bind_inputs(command("collide"), inputs);
   check_oblique(bound);
   const Case c = detail::make_case(bound);
-  detail::refuse_given(c.own, std::array{"velocity", "trajectory", "follow"},
-                       "a single velocity (an array of speeds gives the columns of a curve)");
+  c.own.refuse_given(std::array{"velocity", "trajectory", "follow"},
+                     "a single velocity (an array of speeds gives the columns of a curve)");
   const analysis::CollideOptions options = collide_options(c);
   const bool oblique = options.tangential_velocity > 0.0;
   Table t;

@@ -245,12 +245,6 @@ Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
   return b;
 }
 
-void refuse_given(const Parameters& p, std::span<const char* const> names, std::string_view why) {
-  for (const char* name : names) {
-    if (p.given(name)) throw InvalidArgument(name, p.typed(name), std::string(why));
-  }
-}
-
 std::vector<double> parse_range(const std::string& name, const std::string& text, bool log) {
   static const std::regex pattern(R"(^([^:]+):([^:]+):([0-9]+)$)");
   constexpr long max_points = 10'000'000;

@@ -49,8 +49,8 @@ constexpr std::array<const char*, 3> ranges = {"forces", "overlaps", "contact_ra
 
 Record contact(const Inputs& inputs) {
   const ContactCase c = make_contact_case(inputs);
-  detail::refuse_given(c.own, ranges, "a CSV curve (contact_curve): one state takes force or overlap");
-  detail::refuse_given(c.own, std::array{"log"}, "a range (forces, overlaps or contact_radii) to space");
+  c.own.refuse_given(ranges, "a CSV curve (contact_curve): one state takes force or overlap");
+  c.own.refuse_given(std::array{"log"}, "a range (forces, overlaps or contact_radii) to space");
   if (c.own.given("force") && c.own.given("overlap")) {
     throw InvalidArgument("force", c.own.typed("force"), "force or overlap, not both");
   }
@@ -79,7 +79,7 @@ Table contact_curve(const Inputs& inputs) {
     throw InvalidArgument("forces", c.own.given("forces") ? c.own.text("forces") : "(not given)",
                           "one range: forces, overlaps or contact_radii LO:HI:N");
   }
-  detail::refuse_given(c.own, std::array{"force", "overlap"}, "no single state with a curve (one range only)");
+  c.own.refuse_given(std::array{"force", "overlap"}, "no single state with a curve (one range only)");
   const bool log = c.own.flag("log");
   Table t;
   t.columns = {"contact_radius", "overlap", "force"};

@@ -41,8 +41,8 @@ Record sticking_record(const Case& c) {
 
 // Checked before the model is built (which would ask for the rest of the tangential law).
 void check_head_on(const detail::Bound& b) {
-  detail::refuse_given(b.model_parameters, detail::tangential_names,
-                       "none with sticking: the sticking velocity is that of head-on collisions");
+  b.model_parameters.refuse_given(detail::tangential_names,
+                                  "none with sticking: the sticking velocity is that of head-on collisions");
 }
 
 }  // namespace
@@ -50,8 +50,8 @@ void check_head_on(const detail::Bound& b) {
 Record sticking(const Inputs& inputs, const Progress&) {
   const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
   check_head_on(bound);
-  detail::refuse_given(bound.own, std::array{"log"}, "radii with it (log spaces the radii)");
-  detail::refuse_given(bound.own, std::array{"radii"}, "none for one sticking velocity (sticking_over_radii)");
+  bound.own.refuse_given(std::array{"log"}, "radii with it (log spaces the radii)");
+  bound.own.refuse_given(std::array{"radii"}, "none for one sticking velocity (sticking_over_radii)");
   return sticking_record(detail::make_case(bound));
 }
 

@@ -31,8 +31,8 @@ auto naming_ranges(const Parameters& own, Build build) {
 std::variant<analysis::NormalTable, analysis::TangentialTable> table(const Inputs& inputs, const Progress& progress) {
   const detail::Bound bound = detail::bind_inputs(command("table"), inputs);
   const Parameters& own = bound.own;
-  detail::refuse_given(own, std::array{"velocity", "tangential_velocity"},
-                       "a saved table to read (they are the speeds at which to read it)");
+  own.refuse_given(std::array{"velocity", "tangential_velocity"},
+                   "a saved table to read (they are the speeds at which to read it)");
   if (!own.given("velocities")) throw InvalidArgument("velocities", "(not given)", "LO:HI in m/s (the table's range)");
   const auto [lo, hi] = detail::parse_interval("velocities", own.text("velocities"));
   const bool tangential = own.given("tangential_velocities");
@@ -47,8 +47,8 @@ std::variant<analysis::NormalTable, analysis::TangentialTable> table(const Input
       return analysis::build_tangential_table(c.pair, c.model, lo, hi, gt[0], gt[1], c.options, options);
     });
   }
-  detail::refuse_given(c.model_parameters, detail::tangential_names,
-                       "tangential_velocities too (the asperity law tabulates eps^T(g^N, g^T))");
+  c.model_parameters.refuse_given(detail::tangential_names,
+                                  "tangential_velocities too (the asperity law tabulates eps^T(g^N, g^T))");
   return naming_ranges(own, [&] { return analysis::build_normal_table(c.pair, c.model, lo, hi, c.options, options); });
 }
 

@@ -222,6 +222,12 @@ std::string Parameters::typed(std::string_view name) const {
   return it == typed_.end() ? std::string() : value_text(it->second);
 }
 
+void Parameters::refuse_given(std::span<const char* const> names, std::string_view why) const {
+  for (const char* name : names) {
+    if (given(name)) throw InvalidArgument(name, typed(name), std::string(why));
+  }
+}
+
 std::optional<double> Parameters::real(std::string_view name) const {
   const ParameterValue* v = value_or_default(*this, name);
   if (v == nullptr) return std::nullopt;

@@ -1,6 +1,7 @@
 #include "bounce/models/registry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <utility>
 
 #include <fmt/format.h>
@@ -99,8 +100,11 @@ std::optional<TangentialModel> tangential_model(const Pair& pair, const Paramete
   t.kappa = pair.tangential_mass_factor();
   t.friction = p.require_real("friction", "a friction coefficient mu >= 0 (BSHP96 (36))");
   if (t.law == TangentialLaw::asperity) {
+    p.refuse_given(std::array{"shear_damping"}, "none with the asperity law (gamma_s is the step law's, BSHP96 (39))");
     t.asperity_size = p.require_real("asperity", "an asperity size zeta0 > 0 m (BSHP96 (32))");
   } else {
+    p.refuse_given(std::array{"asperity", "asperity_form"},
+                   "none with the step law (the asperity law's, BSHP96 (32)-(35))");
     t.shear_damping = p.require_real("shear_damping", "a shear damping gamma_s >= 0 1/s (BSHP96 (39))");
   }
   validate(t);

@@ -1,5 +1,6 @@
 #include "bounce/pair/pair_parameters.hpp"
 
+#include <array>
 #include <regex>
 
 #include <fmt/format.h>
@@ -76,10 +77,10 @@ Body second_body(const Parameters& p, const Material& m2, const Body& b1) {
   const bool wall = p.flag("wall"), rigid = p.flag("rigid_wall");
   if (wall && rigid) throw InvalidArgument("rigid_wall", "true", "a wall or a rigid wall, not both");
   if (wall || rigid) {
-    for (const char* name : {"radius2", "inertia2"}) {
-      if (p.given(name)) {
-        throw InvalidArgument(name, p.typed(name), "none with a wall (a wall is flat)");
-      }
+    p.refuse_given(std::array{"radius2", "inertia2"}, "none with a wall (a wall is flat)");
+    p.refuse_given(std::array{"density2"}, "none with a wall (a wall does not move: its mass is infinite)");
+    if (rigid) {
+      p.refuse_given(std::array{"E2", "nu2"}, "none with a rigid wall (it does not deform; wall is the elastic one)");
     }
     return rigid ? rigid_wall(m2) : bounce::wall(m2);
   }
@@ -100,6 +101,7 @@ Pair make_pair(const Parameters& p, std::optional<double> radius) {
       p.given("materials_file") ? MaterialTable::from_file(p.text("materials_file")) : MaterialTable::builtin();
   const Material m1 = resolve_material(p, table, "", nullptr);
   const Material m2 = resolve_material(p, table, "2", &m1);
+  if (radius) p.refuse_given(std::array{"radius"}, "none with a sweep over radii (the sweep sets body 1's radius)");
   Body b1 = sphere(m1, radius ? *radius : p.require_real("radius", "a radius > 0 m for body 1"));
   if (auto j = p.real("inertia")) b1.inertia_factor = *j;
   const Body b2 = second_body(p, m2, b1);

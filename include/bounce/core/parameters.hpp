@@ -103,6 +103,9 @@ class Parameters {
   const ParameterInputs& values() const noexcept { return values_; }
   /// A value as the user typed it (for messages: "1e-3", not "0.001"); "" if not given.
   std::string typed(std::string_view name) const;
+  /// InvalidArgument for the first of `names` the user gave, "NAME = VALUE is invalid:
+  /// expected <why>": an input the chosen model, law or command does not use.
+  void refuse_given(std::span<const char* const> names, std::string_view why) const;
   /// The specs these values were checked against.
   const std::vector<ParameterSpec>& specs() const noexcept { return specs_; }
   const ParameterSpec* spec(std::string_view name) const;

@@ -212,8 +212,9 @@ TEST(TangentialTables, Cli) {
                   "--tangential-velocities", "1:0.1");
   expect_rejected(with({"table", "--velocities", "0.5:2", "--tangential-velocities", "0.001:100", "--csv"}),
                   "--tangential-velocities", "0.001:100");
-  expect_rejected(with({"table", "--velocities", "0.5:2", "--tangential-velocities", "0.001:0.1", "--tangential-law",
-                        "step", "--shear-damping", "10", "--csv"}),
+  expect_rejected({"table", "--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6", "--friction", "0.014142",
+                   "--velocities", "0.5:2", "--tangential-velocities", "0.001:0.1", "--tangential-law", "step",
+                   "--shear-damping", "10", "--csv"},
                   "--tangential-law", "step");
   expect_rejected({"table", "--load", path.string(), "--velocity", "1"}, "--tangential-velocity", "(not given)");
   expect_rejected({"table", "--load", path.string(), "--velocity", "1", "--tangential-velocity", "5"},

@@ -15,6 +15,12 @@ std::vector<std::string> k13(std::string command, std::vector<std::string> more)
   args.insert(args.end(), more.begin(), more.end());
   return args;
 }
+// The same for a sweep over radii, which sets body 1's radius itself.
+std::vector<std::string> k13_radii(std::string command, std::vector<std::string> more) {
+  std::vector<std::string> args = k13(std::move(command), std::move(more));
+  args.erase(args.begin() + 3, args.begin() + 5);  // --radius 2.035e-6
+  return args;
+}
 }  // namespace
 
 TEST(CliAdhesive, CollideJson) {
@@ -75,14 +81,15 @@ TEST(CliAdhesive, Sticking) {
 }
 
 TEST(CliAdhesive, Figure5Sweeps) {
-  const auto curve = run_cli(k13("curve", {"--radii", "1e-6:1e-4:4", "--log", "--velocity", "2", "--closed-forms"}));
+  const auto curve = run_cli(k13_radii("curve", {"--radii", "1e-6:1e-4:4", "--log", "--velocity", "2", "--closed-forms"}));
   ASSERT_EQ(curve.exit_code, 0) << curve.err;
   EXPECT_EQ(curve.out.substr(0, 23), "radius,effective_radius");
   EXPECT_NE(curve.out.find("e_jkr,e_d,e_i"), std::string::npos);
   EXPECT_EQ(count_lines(curve.out), 5);
-  const auto sticking = run_cli(k13("sticking", {"--radii", "1e-6:1e-4:3", "--log"}));
+  const auto sticking = run_cli(k13_radii("sticking", {"--radii", "1e-6:1e-4:3", "--log"}));
   ASSERT_EQ(sticking.exit_code, 0) << sticking.err;
   EXPECT_EQ(count_lines(sticking.out), 4);
+  expect_rejected(k13("curve", {"--radii", "1e-6:1e-4:4", "--velocity", "2"}), "--radius", "2.035e-6");
   // With slow relaxation small grains stick at every speed below the sound speed: such a
   // radius gets an empty value and the reason, the sweep goes on.
   const auto beyond = run_cli({"sticking", "--material", "water-ice", "--model", "krijt", "--tvis", "1e-10",

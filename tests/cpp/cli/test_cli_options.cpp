@@ -92,6 +92,23 @@ TEST(CliOptions, CommandsRefuseUnusedOptions) {
                   "--angle", "0.3");
   expect_rejected({"contact", "--material", "steel", "--radius", "1e-3", "--log"}, "--log", "true");
   expect_rejected(with({"collide", "--velocity", "1", "--json", "--csv"}), "--csv", "given");
+  // The other tangential law's parameters; a wall's contradictions; tolerance with the master curve.
+  const std::vector<std::string> oblique = {"--velocity", "1", "--tangential-velocity", "0.01", "--friction", "0.01"};
+  auto tangential = [&](std::vector<std::string> more) {
+    auto args = with({"collide"});
+    args.insert(args.end(), oblique.begin(), oblique.end());
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+  };
+  expect_rejected(tangential({"--asperity", "1e-6", "--shear-damping", "5"}), "--shear-damping", "5");
+  expect_rejected(tangential({"--tangential-law", "step", "--shear-damping", "5", "--asperity", "1e-6"}), "--asperity",
+                  "1e-6");
+  expect_rejected(tangential({"--tangential-law", "step", "--shear-damping", "5", "--asperity-form", "passive"}),
+                  "--asperity-form", "passive");
+  expect_rejected(with({"collide", "--velocity", "1", "--rigid-wall", "--E2", "1e9"}), "--E2", "1e9");
+  expect_rejected(with({"collide", "--velocity", "1", "--wall", "--density2", "5"}), "--density2", "5");
+  expect_rejected(with({"collide", "--velocity", "1", "--method", "master", "--tolerance", "1e-9"}), "--tolerance",
+                  "1e-9");
 }
 
 // Options no parameter of the command stands for: CLI11 leaves them over; the message
