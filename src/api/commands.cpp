@@ -68,13 +68,20 @@ CommandSpec curve_command() {
            tangential_velocity()}};
 }
 
+// The tangential law's parameters: a head-on calculation has no use for them.
+std::vector<std::string> tangential_parameters() {
+  return {detail::tangential_names.begin(), detail::tangential_names.end()};
+}
+
 CommandSpec sticking_command() {
-  return {"sticking", "The sticking velocity of an adhesive model (and its closed forms)", true, true,
-          {range("radii", "radii LO:HI:N of body 1 [m]: CSV of the sticking velocity (K13 fig. 5)"),
-           flag_parameter("log", "geometric spacing of the radii"),
-           with_default(real_parameter("relative_tolerance", "relative tolerance", "", open_interval(1e-12, 0.1),
-                                       "relative width of the final bracket (default 1e-6)"),
-                        1e-6)}};
+  CommandSpec c{"sticking", "The sticking velocity of an adhesive model (and its closed forms)", true, true,
+                {range("radii", "radii LO:HI:N of body 1 [m]: CSV of the sticking velocity (K13 fig. 5)"),
+                 flag_parameter("log", "geometric spacing of the radii"),
+                 with_default(real_parameter("relative_tolerance", "relative tolerance", "", open_interval(1e-12, 0.1),
+                                             "relative width of the final bracket (default 1e-6)"),
+                              1e-6)}};
+  c.unused = {{tangential_parameters(), "none with sticking: the sticking velocity is that of head-on collisions"}};
+  return c;
 }
 
 CommandSpec table_command() {
@@ -89,6 +96,17 @@ CommandSpec table_command() {
            tangential_velocity()}};
 }
 
+CommandSpec analytic_command() {
+  CommandSpec c{"analytic", "kappa, g* and the exact COR beside BP04's implicit, series and Pade forms", true, true,
+                {velocity("impact velocity g [m/s]")}};
+  c.models = {"viscoelastic"};
+  c.models_why = "viscoelastic (the closed forms of BP04 §8.3 are for it)";
+  c.unused = {{{"contact_end", "yield", "method", "tolerance"},
+               "none with analytic: it gives both end rules, without plastic losses"},
+              {tangential_parameters(), "none with analytic: BP04's forms are head-on"}};
+  return c;
+}
+
 std::vector<CommandSpec> make_commands() {
   return {
       {"materials", "List the materials table (K13 table 2 and more)", false, false, {materials_file()}},
@@ -96,8 +114,7 @@ std::vector<CommandSpec> make_commands() {
       contact_command(),
       collide_command(),
       curve_command(),
-      {"analytic", "kappa, g* and the exact COR beside BP04's implicit, series and Pade forms", true, true,
-       {velocity("impact velocity g [m/s]")}},
+      analytic_command(),
       sticking_command(),
       {"rules", "Post-collision velocities and spins (BSHP96 (42)-(43)) of JSON encounters", true, true, {}},
       table_command(),
@@ -152,6 +169,14 @@ std::vector<std::string> takers(std::string_view name, bool laws) {
                         fmt::format("a parameter that bounce {} takes: one of {}", command.name, fmt::join(names, ", ")));
 }
 
+// The reason `command` gives for never using a model's parameter `name`, if it never does.
+const Unused* unused_by(const CommandSpec& command, std::string_view name) {
+  for (const Unused& u : command.unused) {
+    if (std::find(u.names.begin(), u.names.end(), name) != u.names.end()) return &u;
+  }
+  return nullptr;
+}
+
 std::string chosen(const Inputs& inputs, const char* key, const char* fallback) {
   const auto it = inputs.find(key);
   if (it == inputs.end()) return fallback;
@@ -190,8 +215,13 @@ std::vector<ParameterSpec> offered_parameters(std::string_view name) {
   const CommandSpec& c = command(name);
   std::vector<ParameterSpec> extra;
   if (c.takes_model) {
-    extra.push_back(model_parameter());
-    for (const auto& row : models::model_registry().rows()) extra.insert(extra.end(), row.parameters.begin(), row.parameters.end());
+    extra.push_back(c.models.empty() ? model_parameter() : keyword_parameter("model", c.models, c.models.front().c_str()));
+    for (const auto& row : models::model_registry().rows()) {
+      if (!c.models.empty() && std::find(c.models.begin(), c.models.end(), row.name) == c.models.end()) continue;
+      for (const ParameterSpec& s : row.parameters) {
+        if (!unused_by(c, s.name)) extra.push_back(s);
+      }
+    }
   }
   if (c.name == "contact") {
     extra.push_back(law_parameter());
@@ -219,6 +249,12 @@ Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
   if (c.takes_model) {
     b.model = chosen(inputs, "model", "viscoelastic");
     group = models::model_registry().at(b.model).parameters;
+    if (!c.models.empty() && std::find(c.models.begin(), c.models.end(), b.model) == c.models.end()) {
+      throw InvalidArgument("model", b.model, c.models_why);
+    }
+    for (const auto& [name, value] : inputs) {
+      if (const Unused* u = unused_by(c, name)) throw InvalidArgument(name, value_text(value), u->why);
+    }
   } else if (law) {
     b.model = chosen(inputs, "law", "hertz");
     group = contact::contact_law(b.model).parameters;

@@ -39,17 +39,10 @@ Record sticking_record(const Case& c) {
   return j;
 }
 
-// Checked before the model is built (which would ask for the rest of the tangential law).
-void check_head_on(const detail::Bound& b) {
-  b.model_parameters.refuse_given(detail::tangential_names,
-                                  "none with sticking: the sticking velocity is that of head-on collisions");
-}
-
 }  // namespace
 
 Record sticking(const Inputs& inputs, const Progress&) {
   const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
-  check_head_on(bound);
   bound.own.refuse_given(std::array{"log"}, "radii with it (log spaces the radii)");
   bound.own.refuse_given(std::array{"radii"}, "none for one sticking velocity (sticking_over_radii)");
   return sticking_record(detail::make_case(bound));
@@ -57,7 +50,6 @@ Record sticking(const Inputs& inputs, const Progress&) {
 
 Value sticking_over_radii(const Inputs& inputs, const Progress& progress) {
   const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
-  check_head_on(bound);
   const auto radii = detail::parse_range("radii", bound.own.text("radii"), bound.own.flag("log"));
   if (radii.front() <= 0.0) throw InvalidArgument("radii", bound.own.text("radii"), "radii > 0 m (LO > 0)");
   Value::List rows;

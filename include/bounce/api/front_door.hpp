@@ -30,6 +30,12 @@ using Inputs = ParameterInputs;
 /// Called with (done, total) as a long run goes.
 using Progress = std::function<void(std::size_t, std::size_t)>;
 
+/// Models' parameters that a command never uses, and why (the message when one is given).
+struct Unused {
+  std::vector<std::string> names;
+  std::string why;
+};
+
 /// A command: its name, what it does, and the parameters it takes beside the pair's and the
 /// model's.
 struct CommandSpec {
@@ -38,6 +44,9 @@ struct CommandSpec {
   bool takes_pair = false;
   bool takes_model = false;
   std::vector<ParameterSpec> parameters;  ///< its own
+  std::vector<std::string> models = {};   ///< the models it works with (empty: every model)
+  std::string models_why = {};            ///< ... and why only those
+  std::vector<Unused> unused = {};        ///< models' parameters it never uses (not offered, refused)
 };
 const std::vector<CommandSpec>& commands();
 /// InvalidArgument("command", name, "one of …") for an unknown command.
