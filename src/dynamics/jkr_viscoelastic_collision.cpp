@@ -143,7 +143,7 @@ detail::IntegrationResult<3> JkrViscoelastic::integrate() {
   // A followed run ends at its end_of_follow event; the budget lies beyond it.
   settings.max_time = follow_ ? 2.0 * options_.follow_time / s_.time : 1e4 * t_hertz_;
   const double spacing = 2.0 * t_hertz_ / std::max(options_.trajectory_points, 1);
-  double next_sample = 0.0;
+  double next_sample = spacing;  // the start is sampled below
   const detail::StepObserver<3> observer = [&](double t0, double t1, const auto& at) {
     for (; next_sample <= t1; next_sample += spacing) {
       if (next_sample >= t0) out_.trajectory.push_back(sample(next_sample, at(next_sample)));

@@ -53,7 +53,7 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
   };
   // Elastic Hertz contact lasts 2.94 scaled units (BSHP96 (A13)).
   const double spacing = 2.94 / std::max(options.trajectory_points, 1);
-  double next_sample = 0.0;
+  double next_sample = spacing;  // the start is sampled below
   const detail::StepObserver<3> observer = [&](double t0, double t1, const auto& at) {
     for (; next_sample <= t1; next_sample += spacing) {
       if (next_sample >= t0) sample(next_sample, at(next_sample));
