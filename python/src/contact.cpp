@@ -12,6 +12,7 @@ namespace {
 
 struct PyContactLaw {
   std::shared_ptr<contact::ContactLaw> law;
+  api::Inputs inputs;  // the pair's, the law's keyword and its parameters: for the front door
 };
 
 using ContactAt = contact::ContactPoint (contact::ContactLaw::*)(double) const;
@@ -43,7 +44,24 @@ py::object contact_points(const PyContactLaw& l, ContactAt at, const py::object&
 }
 
 PyContactLaw make_law(const PyPair& pair, const std::string& law, const py::kwargs& parameters) {
-  return PyContactLaw{std::shared_ptr<contact::ContactLaw>(contact::make_contact_law(law, pair.pair, to_inputs(parameters)))};
+  const api::Inputs own = to_inputs(parameters);
+  api::Inputs in = pair.inputs;
+  in.insert(own.begin(), own.end());
+  in["law"] = law;
+  return PyContactLaw{std::shared_ptr<contact::ContactLaw>(contact::make_contact_law(law, pair.pair, own)), std::move(in)};
+}
+
+// One state with everything `bounce contact --json` prints, through the front door.
+py::object state(const PyContactLaw& l, const py::object& force, const py::object& overlap) {
+  api::Inputs in = l.inputs;
+  if (!force.is_none()) in["force"] = to_value("force", force);
+  if (!overlap.is_none()) in["overlap"] = to_value("overlap", overlap);
+  Record out;
+  {
+    py::gil_scoped_release release;
+    out = api::contact(in);
+  }
+  return to_python(out);
 }
 
 py::object adhesion(const PyContactLaw& l) {
@@ -92,6 +110,10 @@ void bind_contact(py::module_& m) {
             return contact_points(l, &contact::ContactLaw::at_contact_radius, a);
           },
           py::arg("contact_radius"), "The point of the law's curve with contact radius a [m] (stable or not)")
+      .def("state", &state, py::arg("force") = py::none(), py::arg("overlap") = py::none(),
+           "One state at a force [N] (default 0) or an overlap [m] with everything `bounce contact --json` prints, the "
+           "same keys and values: the point, the pair, the adhesive law's pull-off and zero-load values, Tabor "
+           "parameters, regimes and warnings, the contact ellipse of convex bodies.")
       .def_property_readonly("adhesion", &adhesion, "Pull-off and zero-load quantities (dict), None for hertz")
       .def("__repr__", [](const PyContactLaw& l) { return "<bounce.ContactLaw " + std::string(l.law->name()) + ">"; });
 }

@@ -3,8 +3,26 @@
 // JSON keys); arrays of speeds loop in C++, not in Python. Library errors map to Python:
 // InvalidArgument -> ValueError (the one-line message naming the parameter, its value and
 // the allowed range), NumericalError -> RuntimeError.
+#include <regex>
+#include <string>
+
 #include "bounce/core/error.hpp"
 #include "objects.hpp"
+
+namespace {
+
+// The message in Python's spelling: the parameters Python names differently (yield_strength,
+// follow_time: convert.cpp), as the parameter and in the lists of names a message gives.
+std::string python_message(const bounce::InvalidArgument& e) {
+  static const std::regex yield(R"((^|one of |, )yield(?=,|$))"), follow(R"((^|one of |, )follow(?=,|$))");
+  const std::string& p = e.parameter();
+  const std::string text = p == "yield"    ? e.renamed("yield_strength").what()
+                           : p == "follow" ? e.renamed("follow_time").what()
+                                           : e.what();
+  return std::regex_replace(std::regex_replace(text, yield, "$1yield_strength"), follow, "$1follow_time");
+}
+
+}  // namespace
 
 PYBIND11_MODULE(_bounce, m) {
   using namespace bounce;
@@ -13,7 +31,7 @@ PYBIND11_MODULE(_bounce, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InvalidArgument& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, python_message(e).c_str());
     } catch (const NumericalError& e) {
       PyErr_SetString(PyExc_RuntimeError, e.what());
     } catch (const Error& e) {
