@@ -17,14 +17,14 @@ bool Range::contains(double x) const {
   if (std::isnan(x) || (std::isinf(x) && !infinite)) return false;
   const bool above = lo_included ? x >= lo : x > lo;
   const bool below = hi_included ? x <= hi : x < hi;
-  return above && below;
+  return above && below && (!integer || x == std::floor(x));
 }
 
 std::string Range::describe(std::string_view what) const {
   const bool lo_finite = std::isfinite(lo), hi_finite = std::isfinite(hi);
   if (lo_finite && hi_finite) {
-    return fmt::format("{} {} {} {} {}", format_value(lo), lo_included ? "<=" : "<", what,
-                       hi_included ? "<=" : "<", format_value(hi));
+    return fmt::format("{}{} {} {} {} {}", integer ? "an integer " : "", format_value(lo), lo_included ? "<=" : "<",
+                       what, hi_included ? "<=" : "<", format_value(hi));
   }
   std::string s(what);
   if (lo_finite) s += fmt::format(" {} {}", lo_included ? ">=" : ">", format_value(lo));

@@ -27,7 +27,8 @@ void add_body(std::vector<ParameterSpec>& out, const std::string& n) {
                                which + " surface energy (work of adhesion) [J/m^2]" + note));
   out.push_back(real_parameter("radius" + n, "radius", "m", positive(),
                                n.empty() ? "body 1 radius [m]" : "body 2 radius [m] (default: body 1's)"));
-  out.push_back(real_parameter("inertia" + n, "moment of inertia factor J/(m R^2)", "", positive(),
+  // Mass inside a ball of radius R has J <= m R^2 about any axis through its centre.
+  out.push_back(real_parameter("inertia" + n, "moment of inertia factor J/(m R^2)", "", Range{0.0, 1.0, false, true},
                                which + " moment of inertia J/(m R^2) (default 2/5, a solid sphere; BSHP96 (4))"));
 }
 

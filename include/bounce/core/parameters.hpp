@@ -41,6 +41,7 @@ struct Range {
   bool lo_included = false;
   bool hi_included = false;
   bool infinite = false;
+  bool integer = false;  ///< whole numbers only (counts)
 
   bool contains(double x) const;
   /// The allowed range as a sentence fragment about `what`: "A [s] >= 0 and finite",

@@ -128,3 +128,20 @@ TEST(CliOptions, OptionsOfOtherCommandsNameTheirCommands) {
   const auto r = run_cli(with("collide", {"--velocity", "1", "--force", "3"}));
   EXPECT_NE(r.err.find("commands that take it: contact"), std::string::npos) << r.err;
 }
+
+// A count takes whole numbers only; a moment of inertia J/(m R^2) is at most 1 (mass inside
+// a ball of radius R).
+TEST(CliOptions, CountsAndInertiaInTheirRanges) {
+  const std::vector<std::string> ice = {"collide", "--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6",
+                                        "--velocity", "1"};
+  auto with = [&](std::vector<std::string> more) {
+    more.insert(more.begin(), ice.begin(), ice.end());
+    return more;
+  };
+  expect_rejected(with({"--trajectory", "--trajectory-points", "2.5"}), "--trajectory-points", "2.5");
+  expect_rejected(with({"--tangential-velocity", "0.01", "--friction", "0.1", "--asperity", "1e-6", "--inertia", "5"}),
+                  "--inertia", "5");
+  EXPECT_EQ(run_cli(with({"--tangential-velocity", "0.01", "--friction", "0.1", "--asperity", "1e-6", "--inertia", "1"}))
+                .exit_code,
+            0);
+}
