@@ -301,6 +301,7 @@ std::vector<double> parse_range(const std::string& name, const std::string& text
     throw InvalidArgument(name, text, fmt::format("LO:HI:N with at most N = {} points", max_points));
   }
   if (n < 1 || lo > hi) throw InvalidArgument(name, text, allowed);
+  if (n == 1 && lo != hi) throw InvalidArgument(name, text, "LO:HI:N with N >= 2 from LO to HI (one point: LO = HI)");
   if (log && lo <= 0.0) throw InvalidArgument(name, text, "LO > 0 with log");
   std::vector<double> values(static_cast<std::size_t>(n));
   for (long i = 0; i < n; ++i) {

@@ -122,6 +122,9 @@ TEST(CliCollide, BadInput) {
                   "--method", "master");
   expect_rejected(command("curve", ice({"--velocities", "-1:1:3"})), "--velocities", "-1:1:3");
   expect_rejected(command("curve", ice({"--velocities", "1:2"})), "--velocities", "1:2");
+  // One point is LO = HI (0.1:1:1 gave the single row at HI).
+  expect_rejected(command("curve", ice({"--velocities", "0.1:1:1"})), "--velocities", "0.1:1:1");
+  EXPECT_EQ(run_cli(command("curve", ice({"--velocities", "1:1:1"}))).exit_code, 0);
   expect_rejected({"collide", "--material", "ice-bshp96", "--material2", "steel", "--radius", "0.01", "--eta1", "1",
                    "--eta2", "2", "--velocity", "1"},
                   "--eta1", "1");
