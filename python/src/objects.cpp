@@ -1,6 +1,7 @@
 // Pair, Model and the listings (materials, models).
 #include "objects.hpp"
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "bounce/core/error.hpp"
@@ -95,8 +96,8 @@ void bind_objects(py::module_& m) {
       .def("to_dict", [](const PyPair& p) { return to_python(api::pair_record(p.pair)); },
            "The pair as the CLI's JSON prints it (bodies and pair quantities).")
       .def("__repr__", [](const PyPair& p) {
-        return "<bounce.Pair R_eff=" + std::to_string(p.pair.effective_radius()) +
-               " m, m_eff=" + std::to_string(p.pair.effective_mass()) + " kg>";
+        return fmt::format("<bounce.Pair R_eff={:.6g} m, m_eff={:.6g} kg>", p.pair.effective_radius(),
+                           p.pair.effective_mass());  // %g: micron grains are not 0.000000
       });
 
   py::class_<PyModel>(m, "Model", "A collision model and its parameters (the CLI's option names, SI units).")
