@@ -36,7 +36,8 @@ CollisionTime collision_time(const CollisionOutcome& out, const Pair& pair, doub
 }
 
 // Quasi-static validity (BSHP96 (B11)-(B12), BP04 (8.26)) and small strain.
-void add_validity_warnings(CollisionOutcome& out, const Pair& pair, double velocity, double viscous_time) {
+void add_validity_warnings(CollisionOutcome& out, const Pair& pair, double velocity, double viscous_time,
+                           const CollisionTime& t_c) {
   const double c_t = pair.transversal_sound_speed();
   if (velocity > 0.1 * c_t) {
     out.warnings.push_back(fmt::format(
@@ -44,7 +45,6 @@ void add_validity_warnings(CollisionOutcome& out, const Pair& pair, double veloc
         "quasi-static approximation (BSHP96 (B11)) does not hold",
         velocity, c_t));
   }
-  const CollisionTime t_c = collision_time(out, pair, velocity);
   if (viscous_time > 0.1 * t_c.value && t_c.value > 0.0) {
     out.warnings.push_back(fmt::format("viscous time scale {:.3g} s is not << {} {:.3g} s (BSHP96 (B12), BP04 (8.26))",
                                        viscous_time, t_c.name, t_c.value));
@@ -80,7 +80,7 @@ void add_k13_appendix_a_warnings(CollisionOutcome& out, const Pair& pair, const 
 }
 
 // K13 §2.1.2: the JKR-based adhesive models assume the Tabor parameter mu > 5.
-void add_adhesive_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model, double velocity) {
+void add_adhesive_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model, double contact_time) {
   const double gamma = *pair.surface_energy();
   const double mu = contact::surface::tabor_parameter(pair.effective_radius(), pair.effective_modulus(), gamma, model.z0);
   if (mu < 5.0) {
@@ -89,7 +89,6 @@ void add_adhesive_warnings(CollisionOutcome& out, const Pair& pair, const models
         "(DMT below 0.1, Maugis-Dugdale between)", mu, model.z0));
   }
   const auto& contact = model.dynamic_contact;
-  const double contact_time = collision_time(out, pair, velocity).value;
   if (contact && !contact->instantaneous_crack && contact_time > 0.0) {
     add_k13_appendix_a_warnings(out, pair, contact->parameters, contact_time);
   }
@@ -127,8 +126,9 @@ void add_tangential_warnings(CollisionOutcome& out) {
 }  // namespace
 
 void add_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model, double velocity) {
-  add_validity_warnings(out, pair, velocity, model.viscous_time);
-  if (model.capabilities.adhesive) add_adhesive_warnings(out, pair, model, velocity);
+  const CollisionTime t_c = collision_time(out, pair, velocity);
+  add_validity_warnings(out, pair, velocity, model.viscous_time, t_c);
+  if (model.capabilities.adhesive) add_adhesive_warnings(out, pair, model, t_c.value);
   if (model.adhesion == models::Adhesion::negligible || model.adhesion == models::Adhesion::weak) {
     add_adhesion_validity_warning(out, pair, velocity, model.adhesion == models::Adhesion::weak);
   }

@@ -121,10 +121,6 @@ std::vector<CommandSpec> make_commands() {
   };
 }
 
-bool declares(const std::vector<ParameterSpec>& specs, std::string_view name) {
-  return std::any_of(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.name == name; });
-}
-
 bool declares(std::span<const ParameterSpec> specs, std::string_view name) {
   return std::any_of(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.name == name; });
 }
@@ -167,6 +163,11 @@ std::vector<std::string> takers(std::string_view name, bool laws) {
   }
   throw InvalidArgument(name, value_given,
                         fmt::format("a parameter that bounce {} takes: one of {}", command.name, fmt::join(names, ", ")));
+}
+
+// Does `command` work with the model `name`?
+bool takes_model(const CommandSpec& command, std::string_view name) {
+  return command.models.empty() || std::find(command.models.begin(), command.models.end(), name) != command.models.end();
 }
 
 // The reason `command` gives for never using a model's parameter `name`, if it never does.
@@ -217,7 +218,7 @@ std::vector<ParameterSpec> offered_parameters(std::string_view name) {
   if (c.takes_model) {
     extra.push_back(c.models.empty() ? model_parameter() : keyword_parameter("model", c.models, c.models.front().c_str()));
     for (const auto& row : models::model_registry().rows()) {
-      if (!c.models.empty() && std::find(c.models.begin(), c.models.end(), row.name) == c.models.end()) continue;
+      if (!takes_model(c, row.name)) continue;
       for (const ParameterSpec& s : row.parameters) {
         if (!unused_by(c, s.name)) extra.push_back(s);
       }
@@ -249,9 +250,7 @@ Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
   if (c.takes_model) {
     b.model = chosen(inputs, "model", "viscoelastic");
     group = models::model_registry().at(b.model).parameters;
-    if (!c.models.empty() && std::find(c.models.begin(), c.models.end(), b.model) == c.models.end()) {
-      throw InvalidArgument("model", b.model, c.models_why);
-    }
+    if (!takes_model(c, b.model)) throw InvalidArgument("model", b.model, c.models_why);
     for (const auto& [name, value] : inputs) {
       if (const Unused* u = unused_by(c, name)) throw InvalidArgument(name, value_text(value), u->why);
     }
