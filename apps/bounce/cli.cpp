@@ -1,0 +1,88 @@
+// bounce: collision physics of adhesive, viscoelastic grains (command line).
+// Thin: the options come from the front door's declarations, the work from the library
+// (docs/architecture.md); docs/cli.md is the contract.
+#include "cli.hpp"
+
+#include <iostream>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "commands.hpp"
+#include "output.hpp"
+
+namespace {
+
+// What the user typed that the chosen command does not take, in the one-line rule
+// (`--force = 3 is invalid: expected ...`), naming the commands that do take it.
+std::string unexpected_argument(const CLI::App& app, const std::vector<bounce::cli::Command>& commands) {
+  for (const auto& command : commands) {
+    if (!command.app->parsed()) continue;
+    const auto extras = command.app->remaining();
+    const std::string name = command.app->get_name();
+    if (extras.empty() || !extras.front().starts_with("-")) {
+      return fmt::format("argument = {} is invalid: expected only options (see `bounce {} --help`)",
+                         extras.empty() ? "(none)" : extras.front(), name);
+    }
+    const std::string& typed = extras.front();
+    const auto equals = typed.find('=');
+    const std::string flag = typed.substr(0, equals);  // --force=3 names --force
+    const std::string value = equals != std::string::npos               ? typed.substr(equals + 1)
+                              : extras.size() > 1 && !extras[1].starts_with("--") ? extras[1]
+                                                                                   : "(given)";
+    std::vector<std::string> takers;
+    for (const auto& other : commands) {
+      if (other.app != command.app && other.app->get_option_no_throw(flag) != nullptr) {
+        takers.push_back(other.app->get_name());
+      }
+    }
+    const std::string where = takers.empty() ? fmt::format("see `bounce {} --help`", name)
+                                             : fmt::format("commands that take it: {}", fmt::join(takers, ", "));
+    return fmt::format("{} = {} is invalid: expected no {} in `bounce {}` ({})", flag, value, flag, name, where);
+  }
+  return fmt::format("argument = {} is invalid: expected a command (see `bounce --help`)",
+                     fmt::join(app.remaining(), " "));
+}
+
+}  // namespace
+
+namespace bounce::cli {
+
+int run(int argc, const char* const* argv) {
+  CLI::App app{"bounce: will two adhesive, viscoelastic spheres bounce or stick?", "bounce"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "bounce 0.1.0");
+  std::vector<Command> commands;
+  std::vector<std::string> names;
+  for (const auto& spec : bounce::api::commands()) {
+    commands.push_back(add_command(app, spec));
+    names.push_back(spec.name);
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ExtrasError&) {
+    std::cerr << "bounce: error: " << unexpected_argument(app, commands) << '\n';
+    return 2;
+  } catch (const CLI::RequiredError& e) {
+    const bool typed = argc > 1 && argv[1][0] != '-';  // a word that is no command
+    std::cerr << fmt::format("bounce: error: command = {} is invalid: expected one of {}\n",
+                             typed ? argv[1] : "(not given)", fmt::join(names, ", "));
+    return 2;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "bounce: error: " << e.what() << '\n';
+    return 2;
+  }
+  for (const Command& command : commands) {
+    if (command.app->parsed()) return run_guarded(command.run, command.options->all_names());
+  }
+  return 2;
+}
+
+}  // namespace bounce::cli
