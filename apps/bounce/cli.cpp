@@ -4,6 +4,8 @@
 #include "cli.hpp"
 
 #include <iostream>
+#include <map>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -45,6 +47,36 @@ std::string unexpected_argument(const CLI::App& app, const std::vector<bounce::c
                      fmt::join(app.remaining(), " "));
 }
 
+// An option given twice (`--velocity 1 --velocity 2`, `--json --json`): which value would be
+// meant is a guess, so it is refused like any bad input. Empty when none is.
+std::string repeated_option(int argc, const char* const* argv) {
+  std::map<std::string, std::vector<std::string>> seen;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view token = argv[i];
+    if (token == "--") break;  // the rest are values
+    if (!token.starts_with("--")) continue;
+    const auto equals = token.find('=');
+    const std::string name(token.substr(0, equals));
+    const bool inline_value = equals != std::string_view::npos;
+    const bool next_is_value = i + 1 < argc && !std::string_view(argv[i + 1]).starts_with("--");
+    seen[name].push_back(inline_value ? std::string(token.substr(equals + 1)) : next_is_value ? argv[i + 1] : "(given)");
+  }
+  for (const auto& [name, values] : seen) {
+    if (values.size() > 1) {
+      return fmt::format("{} = {} is invalid: expected {} once (given {} times)", name, fmt::join(values, ", "), name,
+                         values.size());
+    }
+  }
+  return {};
+}
+
+// CLI11's "--force: 1 required N missing" in the one-line rule.
+std::string missing_value(const CLI::ArgumentMismatch& e) {
+  const std::string what = e.what();
+  const std::string name = what.substr(0, what.find(':'));
+  return fmt::format("{} = (no value) is invalid: expected a value after {} (see --help)", name, name);
+}
+
 }  // namespace
 
 namespace bounce::cli {
@@ -58,6 +90,10 @@ int run(int argc, const char* const* argv) {
   for (const auto& spec : bounce::api::commands()) {
     commands.push_back(add_command(app, spec));
     names.push_back(spec.name);
+  }
+  if (const std::string repeated = repeated_option(argc, argv); !repeated.empty()) {
+    std::cerr << "bounce: error: " << repeated << '\n';
+    return 2;
   }
   try {
     app.parse(argc, argv);
@@ -74,6 +110,9 @@ int run(int argc, const char* const* argv) {
     const bool typed = argc > 1 && argv[1][0] != '-';  // a word that is no command
     std::cerr << fmt::format("bounce: error: command = {} is invalid: expected one of {}\n",
                              typed ? argv[1] : "(not given)", fmt::join(names, ", "));
+    return 2;
+  } catch (const CLI::ArgumentMismatch& e) {
+    std::cerr << "bounce: error: " << missing_value(e) << '\n';
     return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "bounce: error: " << e.what() << '\n';

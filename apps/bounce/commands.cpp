@@ -2,6 +2,7 @@
 // (JSON, CSV or text). The physics and every check are in the library.
 #include "commands.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -27,13 +28,18 @@ void one_format(const Options& o, std::initializer_list<const char*> formats) {
   const char* first = nullptr;
   for (const char* f : formats) {
     if (!o.given(f)) continue;
-    if (first) throw InvalidArgument(f, "given", fmt::format("one output format: --{} or --{}, not both", first, f));
+    if (first) {
+      throw InvalidArgument(f, o.typed(f), fmt::format("one output format: {} or {}, not both", option_name(first), option_name(f)));
+    }
     first = f;
   }
 }
 
 std::string read_file(const std::string& option, const std::string& path, const std::string& what) {
   if (path == "-") return {std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+  std::error_code ec;
+  if (path.empty()) throw InvalidArgument(option, "\"\"", what);
+  if (std::filesystem::is_directory(path, ec)) throw InvalidArgument(option, path, what + ", not a directory");
   std::ifstream file(path);
   std::stringstream text;
   if (file) text << file.rdbuf();
@@ -47,7 +53,7 @@ std::function<int()> materials(Options& o) {
   const bool* json = o.add_flag("json", "print JSON");
   return [&o, json] {
     const Value m = api::materials(o.inputs());
-    *json ? print_json(m) : print_text(materials_text(m));
+    *json ? print_json(m) : print_text(m, materials_text(m));
     return 0;
   };
 }
@@ -61,7 +67,7 @@ std::function<int()> models(Options& o) {
     if (*json) {
       print_json(registry);
     } else {
-      print_text(*markdown ? models_markdown(registry) : models_text(registry));
+      print_text(registry, *markdown ? models_markdown(registry) : models_text(registry));
     }
     return 0;
   };
@@ -73,17 +79,22 @@ std::function<int()> contact(Options& o) {
   return [&o, json, csv] {
     one_format(o, {"json", "csv"});
     const api::Inputs in = o.inputs();
-    const bool range = in.count("forces") || in.count("overlaps") || in.count("contact_radii");
-    if (*csv != range) {
-      throw InvalidArgument("csv", *csv ? "given" : "(not given)",
-                            "--csv together with one range --forces/--overlaps/--contact-radii LO:HI:N");
+    const char* range = nullptr;
+    for (const char* name : {"forces", "overlaps", "contact_radii"}) {
+      if (in.count(name)) range = name;
+    }
+    if (*csv && range == nullptr) {
+      throw InvalidArgument("csv", "given", "one range with it: --forces, --overlaps or --contact-radii LO:HI:N");
+    }
+    if (!*csv && range != nullptr) {
+      throw InvalidArgument(range, std::get<std::string>(in.at(range)), "--csv with a range (it prints a CSV curve)");
     }
     if (*csv) {
       print_csv(api::contact_curve(in));
       return 0;
     }
     const Record out = api::contact(in);
-    *json ? print_json(out) : print_text(contact_text(out));
+    *json ? print_json(out) : print_text(out, contact_text(out));
     return 0;
   };
 }
@@ -99,7 +110,7 @@ std::function<int()> collide(Options& o) {
     if (*csv) {
       print_csv(out.at("trajectory").table());
     } else {
-      *json ? print_json(out) : print_text(collide_text(out));
+      *json ? print_json(out) : print_text(out, collide_text(out));
     }
     return 0;
   };
@@ -113,7 +124,12 @@ std::function<int()> curve(Options& o) {
     one_format(o, {"json", "csv"});
     Progress report("bounce curve", *progress);
     const Record out = api::curve(o.inputs(), std::ref(report));
-    *json ? print_json(out) : print_csv(api::curve_table(out));
+    if (*json) {
+      print_json(out);
+    } else {
+      print_csv(api::curve_table(out));
+      print_warnings(out);
+    }
     return 0;
   };
 }
@@ -122,7 +138,7 @@ std::function<int()> analytic(Options& o) {
   const bool* json = o.add_flag("json", "print JSON");
   return [&o, json] {
     const Record out = api::analytic(o.inputs());
-    *json ? print_json(out) : print_text(analytic_text(out));
+    *json ? print_json(out) : print_text(out, analytic_text(out));
     return 0;
   };
 }
@@ -134,12 +150,17 @@ std::function<int()> sticking(Options& o) {
     const api::Inputs in = o.inputs();
     if (!in.count("radii")) {
       const Record out = api::sticking(in);
-      *json ? print_json(out) : print_text(sticking_text(out, model_of(in)));
+      *json ? print_json(out) : print_text(out, sticking_text(out, model_of(in)));
       return 0;
     }
     Progress report("bounce sticking", *progress);
     const Value rows = api::sticking_over_radii(in, std::ref(report));
-    *json ? print_json(rows) : print_csv(api::sticking_table(rows));
+    if (*json) {
+      print_json(rows);
+    } else {
+      print_csv(api::sticking_table(rows));
+      print_warnings(rows);
+    }
     return 0;
   };
 }
@@ -152,17 +173,21 @@ std::function<int()> rules(Options& o) {
     try {
       print_json(api::rules(o.inputs(), text));
     } catch (const InvalidArgument& e) {
-      if (e.parameter() != "encounters") throw;
-      throw InvalidArgument("input", path == "-" ? "(standard input)" : path, e.allowed());
+      const std::string shown = path == "-" ? "(standard input)" : path;
+      if (e.parameter() == "encounters") throw InvalidArgument("input", shown, e.allowed());
+      if (o.all_names().count(e.parameter())) throw;
+      throw e.renamed(fmt::format("{}: {}", shown, e.parameter()));  // a field of the file
     }
     return 0;
   };
 }
 
 int write_table(const Options& o, const std::string& prefix, const auto& table) {
-  if (o.given("json")) print_text(table.to_json() + '\n');
-  if (o.given("csv")) print_text(table.to_csv());
-  if (o.given("c_header")) print_text(table.to_c_header(prefix));
+  const std::string json = table.to_json();
+  if (o.given("json")) print_text(json + '\n', json);
+  if (o.given("csv")) print_text(table.to_csv(), json);
+  if (o.given("c_header")) print_text(table.to_c_header(prefix), json);
+  print_warnings(table.warnings);
   return 0;
 }
 
@@ -176,12 +201,12 @@ std::function<int()> table(Options& o) {
     if (o.given("load")) {
       const std::string text = read_file("load", *load, "a readable JSON file written by bounce table --json");
       const Record out = api::table_value(text, o.inputs());
-      o.given("json") ? print_json(out) : print_text(table_value_text(out));
+      o.given("json") ? print_json(out) : print_text(out, table_value_text(out));
       return 0;
     }
-    const int formats = int(o.given("json")) + int(o.given("csv")) + int(o.given("c_header"));
-    if (formats != 1) {
-      throw InvalidArgument("format", fmt::format("{} given", formats), "exactly one of --json, --csv, --c-header PREFIX");
+    one_format(o, {"json", "csv", "c_header"});
+    if (!o.given("json") && !o.given("csv") && !o.given("c_header")) {
+      throw InvalidArgument("output format", "(none given)", "one of --json, --csv, --c-header PREFIX");
     }
     Progress report("bounce table", *progress);
     const auto t = api::table(o.inputs(), std::ref(report));

@@ -96,6 +96,11 @@ bool Options::given(const std::string& name) const {
   return it != options_.end() && it->second->count() > 0;
 }
 
+std::string Options::typed(const std::string& name) const {
+  const auto text = text_.find(name);
+  return text != text_.end() ? *text->second : "given";
+}
+
 std::set<std::string> Options::all_names() const {
   std::set<std::string> all = names_;
   all.insert(own_.begin(), own_.end());

@@ -28,6 +28,8 @@ class Options {
   std::string* add_text(const std::string& name, const std::string& help, const std::string& placeholder);
   /// Was the CLI's own option given?
   bool given(const std::string& name) const;
+  /// The value as typed ("given" for a flag), for messages.
+  std::string typed(const std::string& name) const;
 
   /// What the user typed, by parameter name, for the front door.
   api::Inputs inputs() const;

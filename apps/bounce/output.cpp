@@ -4,10 +4,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <map>
+#include <set>
 #include <iostream>
 
 #include <fmt/format.h>
 
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "options.hpp"
 
@@ -45,7 +49,9 @@ struct ToJson {
 
 void check_finite(const nlohmann::json& value, const std::string& path) {
   if (value.is_number_float() && !std::isfinite(value.get<double>())) {
-    throw NumericalError("result " + path + " is not finite; refusing to print it");
+    throw NumericalError(fmt::format("result {} = {} is outside the range of double precision (inputs too extreme "
+                                     "for this computation); refusing to print it",
+                                     path.substr(path.find('.') + 1), value.get<double>()));
   }
   if (value.is_object()) {
     for (const auto& [key, item] : value.items()) check_finite(item, path + "." + key);
@@ -73,6 +79,8 @@ double now_seconds() {
 
 nlohmann::json to_json(const Value& value) { return std::visit(ToJson{}, value.data()); }
 
+void require_finite(const Value& result) { check_finite(to_json(result), "$"); }
+
 void print_json(const Value& value) {
   const nlohmann::json j = to_json(value);
   check_finite(j, "$");
@@ -90,7 +98,66 @@ void print_csv(const Table& table) {
   std::cout << text;
 }
 
-void print_text(const std::string& text) { std::cout << text; }
+void print_text(const std::string& text, const std::string& json) {
+  // nlohmann reads a non-finite double written by to_json as null: a null is a refusal too.
+  const nlohmann::json j = nlohmann::json::parse(json);
+  const std::function<void(const nlohmann::json&, const std::string&)> walk = [&](const nlohmann::json& v, const std::string& path) {
+    if (v.is_null()) throw NumericalError(fmt::format("table value {} is not finite; refusing to print the table", path));
+    if (v.is_object()) {
+      for (const auto& [key, item] : v.items()) walk(item, path + "." + key);
+    } else if (v.is_array()) {
+      for (std::size_t i = 0; i < v.size(); ++i) walk(v[i], fmt::format("{}[{}]", path, i));
+    }
+  };
+  walk(j, "table");
+  std::cout << text;
+}
+
+void print_text(const Value& result, const std::string& text) {
+  require_finite(result);
+  std::cout << text;
+}
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::cerr << "bounce: warning: " << w << '\n';
+}
+
+void print_warnings(const Value& result) {
+  // One line per kind of warning: the last row's (the fastest or largest), and how many rows had it.
+  std::map<std::string, std::pair<std::string, int>> kinds;
+  std::vector<std::string> order;
+  const std::function<void(const Value&, const std::string&)> walk = [&](const Value& v, const std::string& where) {
+    if (const auto* list = std::get_if<Box<Value::List>>(&v.data())) {
+      for (const Value& item : **list) walk(item, where);
+      return;
+    }
+    const auto* boxed = std::get_if<Box<Record>>(&v.data());
+    if (boxed == nullptr) return;
+    const Record& r = **boxed;
+    std::string here = where;
+    for (const char* key : {"velocity", "radius"}) {
+      if (r.contains(key) && std::holds_alternative<double>(r.at(key).data())) {
+        here = fmt::format("at {} {:g}: ", key, r.at(key).number());
+      }
+    }
+    for (const auto& [key, item] : r.fields()) {
+      if (key != "warnings") {
+        walk(item, here);
+        continue;
+      }
+      for (const Value& w : item.list()) {
+        auto [it, fresh] = kinds.try_emplace(message_kind(w.text()), here + w.text(), 0);
+        if (fresh) order.push_back(it->first);
+        it->second = {here + w.text(), it->second.second + 1};
+      }
+    }
+  };
+  walk(result, "");
+  for (const std::string& kind : order) {
+    const auto& [text, rows] = kinds.at(kind);
+    std::cerr << "bounce: warning: " << text << (rows > 1 ? fmt::format(" ({} rows in all)", rows) : "") << '\n';
+  }
+}
 
 Progress::Progress(std::string what, bool forced)
     : what_(std::move(what)), enabled_(forced || ::isatty(STDERR_FILENO)), start_(now_seconds()) {}
@@ -98,8 +165,12 @@ Progress::Progress(std::string what, bool forced)
 void Progress::operator()(std::size_t done, std::size_t total) {
   if (!enabled_) return;
   const double t = now_seconds() - start_;
-  if (done < total && t - last_ < 1.0) return;  // at most once a second
+  if ((total == 0 || done < total) && t - last_ < 1.0) return;  // at most once a second
   last_ = t;
+  if (total == 0) {  // an adaptive run: its size is not known in advance
+    std::cerr << fmt::format("{}: {} collisions, {:.1f} s\n", what_, done, t);
+    return;
+  }
   std::cerr << fmt::format("{}: {}/{} ({:.0f}%) {:.1f} s\n", what_, done, total,
                            100.0 * static_cast<double>(done) / static_cast<double>(total), t);
 }

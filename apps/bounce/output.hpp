@@ -20,8 +20,20 @@ void print_json(const Value& value);
 /// Print a Table as CSV: a header line, then one row per line; numbers in their shortest
 /// round-trip form, text quoted when it holds a space, a comma or a quote, null empty.
 void print_csv(const Table& table);
-/// Write text to stdout as it is.
-void print_text(const std::string& text);
+/// Refuse a result holding a NaN or an infinity anywhere (NumericalError naming the field):
+/// every output format goes through this, so no format can print one.
+void require_finite(const Value& result);
+/// Write `text`, the words for `result`, to stdout, after require_finite(result).
+void print_text(const Value& result, const std::string& text);
+/// Write generated text (a table as JSON, CSV or C) to stdout. `json`: the same content as
+/// JSON, refused (NumericalError) when a number in it is not finite.
+void print_text(const std::string& text, const std::string& json);
+
+/// Warnings on stderr (`bounce: warning: ...`), for outputs that have no place for them
+/// (CSV, tables): every "warnings" list in `result`, each message once, with the
+/// velocity or radius of the row it came from.
+void print_warnings(const Value& result);
+void print_warnings(const std::vector<std::string>& warnings);
 
 /// Progress on stderr for long runs: shown when stderr is a terminal or `forced`, at most
 /// once a second.

@@ -151,10 +151,15 @@ std::string analytic_text(const Record& out) {
 }
 
 std::string sticking_text(const Record& j, const std::string& model) {
-  const auto& bracket = j.at("bracket").list();
-  std::string s = fmt::format("sticking velocity {:.8g} m/s (model {}, bracket [{:.8g}, {:.8g}], {} collisions)\n",
-                              num(j, "sticking_velocity"), model, bracket[0].number(), bracket[1].number(),
-                              std::get<std::int64_t>(j.at("collisions").data()));
+  std::string s;
+  if (j.at("sticking_velocity").is_null()) {
+    s = fmt::format("no sticking velocity (model {}): {}\n", model, str(j, "note"));
+  } else {
+    const auto& bracket = j.at("bracket").list();
+    s = fmt::format("sticking velocity {:.8g} m/s (model {}, bracket [{:.8g}, {:.8g}], {} collisions)\n",
+                    num(j, "sticking_velocity"), model, bracket[0].number(), bracket[1].number(),
+                    std::get<std::int64_t>(j.at("collisions").data()));
+  }
   s += fmt::format("elastic JKR (exact)  {:.8g} m/s\nK13 (25)             {:.8g} m/s\n", num(j, "sticking_velocity_jkr"),
                    num(j, "sticking_velocity_k13_25"));
   if (j.contains("sticking_velocity_bp04_8_100")) {

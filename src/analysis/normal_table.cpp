@@ -99,7 +99,7 @@ dynamics::Outcome NormalTable::outcome(double g) const {
 NormalTable build_normal_table(const Pair& pair, const models::Model& model, double g_min, double g_max,
                                const CollideOptions& options, const TableOptions& table) {
   detail::check_range("velocity", g_min, g_max);
-  require_positive("bound", table.bound, "an interpolation error bound > 0");
+  require_positive("bound", table.bound, "an interpolation error bound");
   NormalTable t;
   t.description = detail::describe(pair, model);
   t.g_min = g_min;
@@ -110,14 +110,15 @@ NormalTable build_normal_table(const Pair& pair, const models::Model& model, dou
     if (v.upper > g_min) t.sticking_velocity = v.upper;  // the smallest speed found to bounce
   }
   std::size_t done = 0;
-  const std::size_t estimate = 2000;
   auto tick = [&] {
-    if (table.progress && ++done % 50 == 0) table.progress(done, std::max(estimate, done + 1));
+    if (table.progress && ++done % 50 == 0) table.progress(done, 0);  // adaptive: no total known
   };
   const double vs = t.sticking_velocity;
+  detail::WarningLog warnings;
   detail::Function f = [&](double x) {
     const double g = vs > 0.0 ? vs + std::exp(x) : std::exp(x);
     const auto out = collide(pair, model, g, options);
+    warnings.add(g, out.warnings);
     return detail::Sample{out.cor, out.outcome == dynamics::Outcome::bounce ? 1.0 : 0.0};
   };
   // With sticking: from 1e-12 v_s above the threshold (eps^N ~ 1e-6 there) up to g_max.
@@ -125,6 +126,7 @@ NormalTable build_normal_table(const Pair& pair, const models::Model& model, dou
   const double hi = std::log(g_max - vs);
   detail::CurveBuilder builder(f, table.bound, tick);
   t.curve = builder.build(lo, hi, std::max(8, static_cast<int>(std::ceil(2.0 * (hi - lo)))));
+  t.warnings = warnings.list();
   if (table.progress) table.progress(done, done);
   return t;
 }

@@ -9,6 +9,7 @@
 #include "bounce/analytic/adhesive.hpp"
 #include "bounce/analytic/master_curve.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 
 namespace bounce::analysis {
@@ -16,20 +17,18 @@ namespace bounce::analysis {
 namespace {
 
 // From a speed that sticks, up by factors of 2 until one bounces; the quasi-static models
-// hold well below the transversal sound speed (BSHP96 (B11)), so the search stops there.
+// hold well below the transversal sound speed (BSHP96 (B11)), so the search stops there
+// (false: they stick at every speed up to it).
 template <class Sticks>
-void bracket_upwards(StickingVelocity& s, double v, double c_t, Sticks sticks) {
+bool bracket_upwards(StickingVelocity& s, double v, double c_t, Sticks sticks) {
   s.lower = v;
   s.upper = std::min(2.0 * v, c_t);
   while (sticks(s.upper)) {
-    if (s.upper >= c_t) {
-      throw NumericalError(fmt::format(
-          "the grains stick at every speed up to the transversal sound speed c_t = {:.4g} m/s: no sticking "
-          "velocity within the quasi-static validity (BSHP96 (B11))", c_t));
-    }
+    if (s.upper >= c_t) return false;
     s.lower = s.upper;
     s.upper = std::min(2.0 * s.upper, c_t);
   }
+  return true;
 }
 
 // From a speed that bounces, down by factors of 2 until one sticks.
@@ -60,9 +59,20 @@ StickingVelocity sticking_velocity(const Pair& pair, const models::Model& model,
   // Start from the elastic JKR threshold and bracket by factors of 2.
   const double v = analytic::sticking_velocity_jkr(pair.effective_mass(), pair.effective_radius(),
                                                    pair.effective_modulus(), gamma);
-  if (!(v > 0.0) || !std::isfinite(v)) throw NumericalError("no starting point for the sticking velocity");
+  if (!std::isnormal(v)) {
+    throw NumericalError(fmt::format(
+        "the elastic JKR sticking velocity (K13 (24), where the search starts) is {} m/s for gamma = {:g} J/m^2: "
+        "outside double precision, so no sticking velocity can be computed for this pair",
+        format_value(v), gamma));
+  }
+  const double c_t = pair.transversal_sound_speed();
   if (sticks(v)) {
-    bracket_upwards(s, v, pair.transversal_sound_speed(), sticks);
+    if (!bracket_upwards(s, v, c_t, sticks)) {
+      s.sticks_up_to_sound_speed = true;
+      s.lower = c_t;
+      s.upper = 0.0;
+      return s;
+    }
   } else {
     bracket_downwards(s, v, sticks);
   }

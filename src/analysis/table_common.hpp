@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -21,6 +23,26 @@ inline std::string describe(const Pair& pair, const models::Model& model) {
                      pair.body1().radius, pair.body2().radius, pair.effective_mass(), pair.effective_modulus(),
                      pair.surface_energy() ? fmt::format(", gamma = {:g} J/m^2", *pair.surface_energy()) : "");
 }
+
+// The validity warnings of the collisions a table is built from: one per kind (the text
+// without its numbers), from the fastest collision that gave it (where they are worst).
+class WarningLog {
+ public:
+  void add(double g, const std::vector<std::string>& warnings) {
+    for (const std::string& w : warnings) {
+      auto [it, fresh] = seen_.try_emplace(message_kind(w), g, w);
+      if (!fresh && g > it->second.first) it->second = {g, w};
+    }
+  }
+  std::vector<std::string> list() const {
+    std::vector<std::string> out;
+    for (const auto& [kind, entry] : seen_) out.push_back(entry.second);
+    return out;
+  }
+
+ private:
+  std::map<std::string, std::pair<double, std::string>> seen_;
+};
 
 inline void check_range(const char* name, double lo, double hi) {
   require_positive(std::string(name) + "_min", lo, "a velocity > 0 m/s");

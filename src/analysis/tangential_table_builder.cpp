@@ -90,7 +90,7 @@ class Builder {
   void refine_nodes(const std::vector<CheckPoint>& on_rows);
   void refine_rows(const std::vector<CheckPoint>& between);
   void tick() {
-    if (table_.progress && ++done_ % 50 == 0) table_.progress(done_, std::max<std::size_t>(4000, done_ + 1));
+    if (table_.progress && ++done_ % 50 == 0) table_.progress(done_, 0);  // adaptive: no total known
   }
 
   const Pair& pair_;
@@ -98,6 +98,7 @@ class Builder {
   CollideOptions options_;
   const TableOptions& table_;
   TangentialTable t_;
+  detail::WarningLog warnings_;
   double span_ = 0.0;
   std::size_t rows_ = 0;
   int nodes_ = first_nodes;
@@ -159,6 +160,7 @@ void Builder::fill() {
 double Builder::direct_cor(double gn, double gt) {
   options_.tangential_velocity = gt;
   const auto out = collide(pair_, model_, gn, options_);
+  warnings_.add(gn, out.warnings);
   tick();
   return out.tangential->cor;
 }
@@ -231,6 +233,7 @@ TangentialTable Builder::build(double gn_min, double gn_max, double gt_min, doub
   refine_rows(between);
   t_.checked_error = std::max(t_.checked_error, worst(on_rows));
   t_.check_points = static_cast<long>(on_rows.size() + between.size());
+  t_.warnings = warnings_.list();
   if (table_.progress) table_.progress(done_, done_);
   return t_;
 }
@@ -242,7 +245,7 @@ TangentialTable build_tangential_table(const Pair& pair, const models::Model& mo
                                        const TableOptions& table) {
   detail::check_range("velocity", gn_min, gn_max);
   detail::check_range("tangential_velocity", gt_min, gt_max);
-  require_positive("bound", table.bound, "an interpolation error bound > 0");
+  require_positive("bound", table.bound, "an interpolation error bound");
   tabulable(model, gn_min, gn_max, gt_max);
   return Builder(pair, model, options, table).build(gn_min, gn_max, gt_min, gt_max);
 }

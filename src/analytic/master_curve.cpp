@@ -1,5 +1,6 @@
 #include "bounce/analytic/master_curve.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -58,7 +59,9 @@ double master_cor(double kappa, models::EndRule rule) {
   check_kappa(kappa);
   if (kappa < 1.0) {
     const int q = rule == models::EndRule::overlap ? cor_overlap_scaled : cor_force;
-    return clenshaw(small_coefficients[q], small_nodes, 2.0 * std::sqrt(kappa) - 1.0);
+    // A passive force gives e <= 1, and e = 1 at kappa = 0 (Hertz); the fit's own error
+    // (a few 1e-15 at kappa = 0) must not carry it past that bound.
+    return std::min(1.0, clenshaw(small_coefficients[q], small_nodes, 2.0 * std::sqrt(kappa) - 1.0));
   }
   if (rule == models::EndRule::overlap) {
     const double k2 = kappa * kappa;

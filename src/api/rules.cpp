@@ -1,5 +1,7 @@
 // The front door's `rules`: post-collision velocities and spins of JSON encounters (BSHP96
 // (42)-(43) with the impulse of analysis/rules.hpp).
+#include <cmath>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -60,16 +62,27 @@ Record one(const nlohmann::json& in, Encounters& c) {
   const Vector3 n = vector_field(in, "encounter", "normal", true);
   const GrainMotion g1 = grain(in, "grain1"), g2 = grain(in, "grain2");
   analysis::CollisionRuleResult r;
-  if (in.contains("cor")) {  // given coefficients
-    if (!in.at("cor").is_number()) throw InvalidArgument("cor", in.at("cor").dump(), "a number 0 <= eps^N <= 1");
-    if (in.contains("cor_tangential") && !in.at("cor_tangential").is_number()) {
-      throw InvalidArgument("cor_tangential", in.at("cor_tangential").dump(), "a number (eps^T)");
-    }
-    const double et = in.value("cor_tangential", 1.0);
-    r = analysis::apply_restitution(c.pair, n, g1, g2, in.at("cor").get<double>(), et);
+  const bool given_n = in.contains("cor"), given_t = in.contains("cor_tangential");
+  if (given_n && !in.at("cor").is_number()) throw InvalidArgument("cor", in.at("cor").dump(), "a number 0 <= eps^N <= 1");
+  if (given_t && (!in.at("cor_tangential").is_number() || std::abs(in.at("cor_tangential").get<double>()) > 1.0)) {
+    // A given eps^T beyond 1 in size would create energy (BSHP96 (11)).
+    throw InvalidArgument("cor_tangential", in.at("cor_tangential").dump(), "a number -1 <= eps^T <= 1 (BSHP96 (2))");
+  }
+  std::vector<std::string> warnings;
+  if (given_n && given_t) {
+    r = analysis::apply_restitution(c.pair, n, g1, g2, in.at("cor").get<double>(), in.at("cor_tangential").get<double>());
   } else {
+    // What is not given comes from the model (eps^T = 1 with a given eps^N: no tangential loss).
     const Case& m = c.model_case();
-    r = analysis::collide_grains(m.pair, m.model, n, g1, g2, m.options);
+    const bool need_model = !given_n || given_t;
+    r = need_model ? analysis::collide_grains(m.pair, m.model, n, g1, g2, m.options) : analysis::CollisionRuleResult{};
+    const double en = given_n ? in.at("cor").get<double>() : r.cor;
+    const double et = given_t ? in.at("cor_tangential").get<double>() : given_n ? 1.0 : r.cor_tangential;
+    if (std::abs(et) > 1.0) {
+      warnings.push_back(fmt::format("the model gives |eps^T| = {:.6g} > 1: the published asperity law returns more "
+                                     "tangential energy than it got (docs/tangential.md)", std::abs(et)));
+    }
+    r = analysis::apply_restitution(c.pair, n, g1, g2, en, et);
   }
   const double m = c.pair.effective_mass(), kappa = c.pair.tangential_mass_factor();
   const double gn = r.before.normal_speed, gt = r.before.tangential_speed;
@@ -81,6 +94,7 @@ Record one(const nlohmann::json& in, Encounters& c) {
   out.set("normal_velocity", clean(r.before.normal));
   out.set("tangential_velocity", clean(r.before.tangential));
   out.set("energy_change", r.energy_change);
+  out.set("warnings", warnings);
   // BSHP96 (11), for comparison.
   out.set("energy_change_bshp96_11", 0.5 * m * gn * gn * (r.cor * r.cor - 1.0) +
                                          0.5 * m * kappa * gt * gt * (r.cor_tangential * r.cor_tangential - 1.0));

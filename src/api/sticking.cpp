@@ -1,5 +1,7 @@
 // The front door's sticking velocity, alone or against the radius (K13 fig. 5, right),
 // beside its closed forms.
+#include <fmt/format.h>
+
 #include "binding.hpp"
 #include "bounce/analysis/sticking.hpp"
 #include "bounce/analytic/adhesive.hpp"
@@ -32,8 +34,16 @@ Record sticking_record(const Case& c) {
   const double tolerance = *c.own.real("relative_tolerance");
   const analysis::StickingVelocity s = analysis::sticking_velocity(c.pair, c.model, c.options, tolerance);
   Record j = sticking_closed_forms(c.pair, c.model);
-  j.set("sticking_velocity", s.velocity);
-  j.set("bracket", std::vector<double>{s.lower, s.upper});
+  if (s.sticks_up_to_sound_speed) {
+    j.set("sticking_velocity", nullptr);
+    j.set("bracket", nullptr);
+    j.set("note", fmt::format("the grains stick at every speed up to the transversal sound speed c_t = {:.4g} m/s, "
+                              "where the quasi-static models end (BSHP96 (B11)): no sticking velocity below it",
+                              s.lower));
+  } else {
+    j.set("sticking_velocity", s.velocity);
+    j.set("bracket", std::vector<double>{s.lower, s.upper});
+  }
   j.set("collisions", s.collisions);
   j.set("relative_tolerance", tolerance);
   return j;
@@ -58,7 +68,7 @@ Value sticking_over_radii(const Inputs& inputs, const Progress& progress) {
     Record j;
     try {
       j = sticking_record(c);
-    } catch (const NumericalError& e) {  // e.g. no threshold below the sound speed: reported, not fatal
+    } catch (const NumericalError& e) {  // a threshold that cannot be found: reported, not fatal
       j = sticking_closed_forms(c.pair, c.model);
       j.set("sticking_velocity", nullptr);
       j.set("note", e.what());

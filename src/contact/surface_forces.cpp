@@ -1,6 +1,7 @@
 #include "bounce/contact/surface_forces.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 #include <numbers>
@@ -58,7 +59,12 @@ std::string regime_bp04(double mu) {
 }
 
 ParameterSpec z0_parameter() {
-  return with_default(real_parameter("z0", "equilibrium separation z0", "m", positive(),
+  // Below a femtometre (a nucleus) or above a micrometre the surface-force picture (forces
+  // of range z0, BP04 (8.53)) means nothing; the bounds also keep z0^3 (Tabor's parameter),
+  // sigma0 = gamma/z0 and Maugis' lambda far from underflow and overflow (z0 = 1e-150 m gave
+  // an infinite Tabor parameter).
+  const Range physical{1e-15, 1e-6, true, true, false};
+  return with_default(real_parameter("z0", "equilibrium separation z0", "m", physical,
                                      "equilibrium separation z0 [m] of the surfaces: Tabor parameter K13 (11), "
                                      "Maugis' lambda, krijt's sigma0 = gamma/z0 (default 2e-10)"),
                       0.2e-9);

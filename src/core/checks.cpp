@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <regex>
 #include <fmt/format.h>
 
 #include "bounce/core/error.hpp"
@@ -14,6 +15,11 @@ std::string format_value(double value) {
   char buffer[32];
   auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, end);
+}
+
+std::string message_kind(std::string_view message) {
+  static const std::regex number(R"([-+]?[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?)");
+  return std::regex_replace(std::string(message), number, "");
 }
 
 std::string one_of(const std::vector<std::string>& names) {

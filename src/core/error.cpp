@@ -7,7 +7,8 @@ namespace bounce {
 namespace {
 std::string compose(const std::string& parameter, const std::string& value,
                     const std::string& allowed) {
-  return parameter + " = " + value + " is invalid: expected " + allowed;
+  // An empty value is shown as "" (`--material = "" is invalid`, not `--material =  is`).
+  return parameter + " = " + (value.empty() ? std::string("\"\"") : value) + " is invalid: expected " + allowed;
 }
 }  // namespace
 

@@ -29,7 +29,7 @@ void validate(const TangentialModel& m) {
   if (!(m.dense_breaks > 0.0)) {  // +inf resolves every break
     throw InvalidArgument("dense_breaks", fmt::format("{:g}", m.dense_breaks), "breaks per time unit > 0 (or inf)");
   }
-  require_positive("kappa", m.kappa, "tangential mass factor kappa of BSHP96 (8), 0 < kappa <= 1");
+  require_positive("kappa", m.kappa, "tangential mass factor kappa of BSHP96 (8)");
   if (m.kappa > 1.0) throw InvalidArgument("kappa", fmt::format("{:g}", m.kappa), "0 < kappa <= 1 (BSHP96 (8))");
   if (m.law == TangentialLaw::asperity) {
     require_positive("asperity", m.asperity_size, "asperity size zeta0 [m] (BSHP96 (32))");

@@ -68,6 +68,10 @@ Material parse_entry(const toml::table& entry, const std::string& origin, std::s
   if (entry.contains("surface_energy")) {
     m.surface_energy = required_number(entry, "surface_energy", where);
   }
+  if (entry.contains("surface_energy") && entry.contains("surface_energy_range")) {
+    throw InvalidArgument(where + ".surface_energy_range", "(given with surface_energy)",
+                          "surface_energy or surface_energy_range, not both (a range means the value is not known)");
+  }
   if (const toml::node* range = entry.get("surface_energy_range")) {
     const toml::array* arr = range->as_array();
     if (arr == nullptr || arr->size() != 2 || !(*arr)[0].value<double>() ||
@@ -131,8 +135,13 @@ MaterialTable MaterialTable::from_toml(std::string_view text, std::string_view o
 }
 
 MaterialTable MaterialTable::from_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (path.empty()) throw InvalidArgument("materials_file", "\"\"", "the path of a readable TOML file");
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InvalidArgument("materials_file", path.string(), "a readable TOML file, not a directory");
+  }
   std::ifstream in(path);
-  if (!in) throw InvalidArgument("materials file", path.string(), "a readable TOML file");
+  if (!in) throw InvalidArgument("materials_file", path.string(), "a readable TOML file");
   std::ostringstream text;
   text << in.rdbuf();
   return from_toml(text.str(), path.string());

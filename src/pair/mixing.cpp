@@ -33,7 +33,7 @@ double hertz_constant(double effective_modulus, double effective_radius) {  // B
 }
 
 double combined_surface_energy(double gamma1, double gamma2) {  // K13 footnote 8, docs/decisions.md D2
-  return std::sqrt(gamma1 * gamma2);
+  return std::sqrt(gamma1) * std::sqrt(gamma2);  // not sqrt(gamma1 gamma2): no underflow for tiny gammas
 }
 
 double sphere_mass(double radius, double density) {

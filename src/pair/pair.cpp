@@ -29,6 +29,24 @@ void validate_body(const Body& body, const std::string& label, bool may_be_wall)
     }
     require_positive(label + ".inertia_factor", body.inertia_factor,
                      "moment of inertia factor J/(m R^2)");
+    // (4/3) pi R^3 rho must be a normal double: R = 1e308 gave an infinite mass and a NaN
+    // R_eff, R = 1e-300 a zero mass.
+    if (!std::isnormal(body.mass())) {
+      throw InvalidArgument(label + ".radius", format_value(body.radius),
+                            fmt::format("a radius whose mass (4/3) pi R^3 rho (rho = {:g} kg/m^3) is finite and > 0 in "
+                                        "double precision",
+                                        body.material.density));
+    }
+  }
+}
+
+// A derived property of the pair must be a normal double (no overflow to inf, no underflow
+// to 0): otherwise every result would be NaN or infinite.
+void require_normal(double value, const char* parameter, double given, const char* what) {
+  if (!std::isnormal(value)) {
+    throw InvalidArgument(parameter, format_value(given),
+                          fmt::format("values whose {} is finite and > 0 in double precision (it is {})", what,
+                                      format_value(value)));
   }
 }
 }  // namespace
@@ -62,6 +80,8 @@ Pair::Pair(Body body1, Body body2) : body1_(std::move(body1)), body2_(std::move(
     surface_energy_ = combined_surface_energy(*body1_.material.surface_energy,
                                               *body2_.material.surface_energy);
   }
+  require_normal(effective_radius_, "body1.radius", body1_.radius, "effective radius R1 R2/(R1 + R2)");
+  require_normal(effective_modulus_, "body1.youngs_modulus", body1_.material.youngs_modulus, "effective modulus E*");
 }
 
 Pair Pair::identical(Material material, double radius) {

@@ -36,6 +36,8 @@ struct PiecewiseCubic {
 struct TableOptions {
   double bound = 1e-6;  ///< interpolation error to reach at every check point
   /// Called with (work done, work estimate) as the table grows.
+  /// (collisions done, 0) as the table grows (its size is not known in advance), then
+  /// (done, done) when it is built.
   std::function<void(std::size_t, std::size_t)> progress;
 };
 
@@ -49,6 +51,8 @@ struct NormalTable {
   double sticking_velocity = 0.0;   ///< v_s [m/s]; 0: the grains never stick in range
   double bound = 0.0;               ///< stated interpolation error of eps^N
   PiecewiseCubic curve;             ///< eps^N of x; label 1: bounce, 0: stick
+  /// Validity warnings of the collisions it was built from (one per kind; not saved).
+  std::vector<std::string> warnings;
 
   double cor(double g) const;  ///< InvalidArgument outside [g_min, g_max]
   dynamics::Outcome outcome(double g) const;
@@ -80,6 +84,8 @@ struct TangentialTable {
   std::vector<double> s;              ///< nodes in [0, 1]
   std::vector<double> rows;           ///< per row: tau_end, ln t_u
   std::vector<double> nodes;          ///< per row and node: y1, y1', y2, y2', K, dK/ds
+  /// Validity warnings of the collisions it was built from (one per kind; not saved).
+  std::vector<std::string> warnings;
 
   std::size_t row_count() const { return rows.size() / 2; }
   /// eps^T; InvalidArgument outside [gn_min, gn_max] x [gt_min, gt_max].

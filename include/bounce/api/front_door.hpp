@@ -27,7 +27,8 @@
 namespace bounce::api {
 
 using Inputs = ParameterInputs;
-/// Called with (done, total) as a long run goes.
+/// Called with (done, total) as a long run goes; total = 0 while it is not known (an
+/// adaptive table: done counts its collisions).
 using Progress = std::function<void(std::size_t, std::size_t)>;
 
 /// Models' parameters that a command never uses, and why (the message when one is given).

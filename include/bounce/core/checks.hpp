@@ -14,6 +14,10 @@ namespace bounce {
 /// Shortest round-trip text of a double ("1e-09", "0.25", "nan", "inf").
 std::string format_value(double value);
 
+/// A message without its numbers ("impact velocity 1e+03 m/s is ..." -> "impact velocity  m/s
+/// is ..."): warnings of one kind from many collisions are reported once.
+std::string message_kind(std::string_view message);
+
 /// value must be finite.
 double require_finite(std::string_view parameter, double value);
 /// value must be finite and > 0. `what` names the quantity and unit for the message.

@@ -143,7 +143,7 @@ TEST(CliContact, BadInputEachCase) {
                                        "poisson_ratio = 0.25\ndensity = 1000.0\n");
   expect_rejected({"materials", "--materials-file", out_of_range},
                   out_of_range + ": water-ice.youngs_modulus", "-7e+09");
-  expect_rejected({"materials", "--materials-file", "/nonexistent/bounce.toml"}, "materials file",
+  expect_rejected({"materials", "--materials-file", "/nonexistent/bounce.toml"}, "--materials-file",
                   "/nonexistent/bounce.toml");
 }
 
