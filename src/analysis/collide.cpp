@@ -101,8 +101,15 @@ CollisionOutcome force_law_collision(const Pair& pair, const models::Model& mode
   const bool master = use_master_curve(model, options);
   if (options.tangential_velocity > 0.0) return oblique_force_law(pair, model, velocity, options);
   if (master) return from_master(pair, model, velocity);
-  return dynamics::integrate_normal_collision(*model.force, pair.effective_mass(), velocity,
-                                              normal_options(model, options));
+  try {
+    return dynamics::integrate_normal_collision(*model.force, pair.effective_mass(), velocity,
+                                                normal_options(model, options));
+  } catch (const dynamics::StepBudgetExceeded& e) {
+    if (!model.capabilities.master_curve) throw;
+    throw NumericalError(fmt::format("{} (kappa = {:.3g}: the contact creeps apart for a very long time; the master "
+                                     "curve, --method master, gives this collision exactly)",
+                                     e.what(), viscoelastic_scales(pair, model, velocity).kappa));
+  }
 }
 
 // The tangential motion of an oblique collision of a dynamic-contact model, driven by

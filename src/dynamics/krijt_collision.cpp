@@ -340,9 +340,13 @@ CollisionOutcome integrate_krijt_collision(const models::KrijtParameters& p, dou
     // BDF does not. The whole collision is recomputed with CVODE.
     AdhesiveCollisionOptions cvode = options;
     cvode.engine = StiffEngine::cvode;
-    CollisionOutcome out = krijt_collision(p, speed, cvode);
-    out.notes.push_back(fmt::format("computed with CVODE: RODAS stopped ({})", e.what()));
-    return out;
+    try {
+      CollisionOutcome out = krijt_collision(p, speed, cvode);
+      out.notes.push_back(fmt::format("computed with CVODE: RODAS stopped ({})", e.what()));
+      return out;
+    } catch (const NumericalError& second) {  // both engines failed: say so, first the one asked for
+      throw NumericalError(fmt::format("RODAS stopped ({}); CVODE, tried next, too ({})", e.what(), second.what()));
+    }
   }
 }
 

@@ -33,7 +33,10 @@ double hertz_constant(double effective_modulus, double effective_radius) {  // B
 }
 
 double combined_surface_energy(double gamma1, double gamma2) {  // K13 footnote 8, docs/decisions.md D2
-  return std::sqrt(gamma1) * std::sqrt(gamma2);  // not sqrt(gamma1 gamma2): no underflow for tiny gammas
+  const double product = gamma1 * gamma2;
+  // sqrt(gamma1) sqrt(gamma2) where the product under- or overflows (gamma = 1e-300 gave 0).
+  if (product != 0.0 && std::isnormal(product)) return std::sqrt(product);
+  return std::sqrt(gamma1) * std::sqrt(gamma2);
 }
 
 double sphere_mass(double radius, double density) {

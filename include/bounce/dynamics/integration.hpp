@@ -17,7 +17,10 @@ namespace bounce::dynamics {
 struct IntegrationSettings {
   double relative_tolerance = 1e-12;
   double absolute_tolerance = 1e-12;
-  long max_steps = 20'000'000;   ///< StepBudgetExceeded beyond this
+  /// StepBudgetExceeded beyond this: ~0.5 s of steps. A collision takes 20-2000 steps; what
+  /// needs more is creeping without end (a strongly overdamped contact), and 2e7 steps
+  /// only made the refusal take 10-40 s.
+  long max_steps = 2'000'000;
   double max_time = 1e9;         ///< scaled time budget: TimeBudgetExceeded beyond it
 };
 

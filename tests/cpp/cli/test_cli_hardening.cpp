@@ -230,3 +230,23 @@ TEST(CliHardening, TableProgressHasTrueTotals) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliHardening, RefusalsComeFastAndSayWhatToDo) {
+  // An overdamped contact integrated directly creeps apart without end: the step budget
+  // (2e6 steps, ~0.5 s) ends it with a pointer to the master curve, not after 10-40 s.
+  const auto creep = run_cli({"collide", "--material", "water-ice", "--radius", "1e-3", "--A", "1", "--velocity", "1",
+                              "--method", "integrate"});
+  EXPECT_EQ(creep.exit_code, 3);
+  EXPECT_NE(creep.err.find("--method master"), std::string::npos) << creep.err;
+  // K13's initial condition needs k < 0.995; k outside [1e-12, 0.99] is bad input, not a solver failure.
+  expect_rejected({"collide", "--model", "krijt", "--tvis", "1e-11", "--material", "water-ice", "--radius", "1e-6",
+                   "--velocity", "1", "--k", "0.999"},
+                  "--k", "0.999");
+  expect_rejected({"collide", "--model", "krijt", "--tvis", "1e-11", "--material", "water-ice", "--radius", "1e-6",
+                   "--velocity", "1", "--k", "1e-15"},
+                  "--k", "1e-15");
+}
+
+}  // namespace
