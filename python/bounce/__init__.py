@@ -13,8 +13,10 @@ The parameters are those of the command line (`bounce models` / bounce.models() 
 model's), as keywords: bounce.Model("power-law", power_d1=..., power_d2=...). Results are
 dicts with the keys of the CLI's JSON.
 
-Errors: bad input raises ValueError naming the parameter, its value and the allowed
-range (TypeError for a value of the wrong type); a numerical failure raises RuntimeError.
+Errors follow one rule, "NAME = VALUE is invalid: expected ...": a value out of its allowed
+range (or one whose results would be inf or NaN) raises ValueError, a value of the wrong
+type (a bool, a str or None where a number is expected) TypeError; a numerical failure
+raises RuntimeError. Ctrl-C interrupts the long calls (KeyboardInterrupt).
 """
 
 from ._bounce import (  # noqa: F401
@@ -30,6 +32,7 @@ from ._bounce import (  # noqa: F401
     contact_laws,
     cor_pade,
     cor_series,
+    curve,
     master_cor,
     material,
     material_names,
@@ -39,19 +42,6 @@ from ._bounce import (  # noqa: F401
     sticking_velocity,
     viscoelastic_scales,
 )
-
-
-
-def curve(pair: Pair, model: Model, velocities, **options):
-    """The COR curve over an array of impact speeds [m/s] (the CLI's `bounce curve`).
-
-    The same as ``collide(pair, model, numpy.asarray(velocities, float), **options)``: a dict
-    of arrays (velocity, cor, outcome, stick, contact_time, max_overlap, bulk_dissipated,
-    crack_dissipated; cor_tangential with a tangential_velocity), the loop in C++.
-    """
-    import numpy as np
-
-    return collide(pair, model, np.asarray(velocities, dtype=float), **options)
 
 
 __all__ = [

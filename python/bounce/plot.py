@@ -330,9 +330,10 @@ def k13_fig5(quick: bool = False) -> Figure:
 def _sticking_or_nan(pair: b.Pair, model: b.Model) -> float:
     """The sticking velocity, or NaN (not plotted) where the grains stick at every quasi-static speed."""
     try:
-        return b.sticking_velocity(pair, model, 1e-4)
-    except RuntimeError:
+        v = b.sticking_velocity(pair, model, 1e-4)
+    except RuntimeError:  # no threshold found (a numerical failure of the search)
         return float("nan")
+    return float("nan") if v is None else v
 
 
 def energy_budget(pair: b.Pair, model: b.Model, velocity: float, ax: Axes | None = None, follow_time: float = 0.0,

@@ -1,10 +1,14 @@
 // collide (one speed or an array of them), closed_forms, viscoelastic_scales, sticking.
+#include <algorithm>
+#include <chrono>
 #include <map>
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "bounce/analysis/closed_forms.hpp"
 #include "bounce/analysis/sticking.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "objects.hpp"
 
@@ -14,63 +18,140 @@ namespace {
 
 std::vector<py::ssize_t> shape_of(const Array& a) { return {a.shape(), a.shape() + a.ndim()}; }
 
+// A result that is inf or NaN is refused as the speed's fault (the pair and the model were
+// checked before): "velocity = 1e+308 is invalid: expected ... (contact_time = inf)".
+void require_finite_results(const Value& results, double velocity) {
+  if (const std::string bad = non_finite(results); !bad.empty()) {
+    throw InvalidArgument("velocity", format_value(velocity),
+                          fmt::format("an impact velocity at which every result of this pair and model is finite in "
+                                      "double precision ({})",
+                                      bad));
+  }
+}
+
+// collide() over speeds, in pieces between which Ctrl-C is checked: each piece (one front
+// door call, GIL released) is sized from the last one's time per collision to take about
+// 20 ms (at most twice the last, at most 4096 speeds), so the checks cost nothing and a
+// KeyboardInterrupt arrives within about one piece.
+Table collide_in_pieces(const api::Inputs& inputs, const std::vector<double>& v) {
+  using Clock = std::chrono::steady_clock;
+  constexpr double target = 0.02;  // s
+  Table all;
+  std::size_t done = 0, piece = 1;
+  do {  // at least once: an empty array still has its inputs checked
+    const std::size_t n = std::min(piece, v.size() - done);
+    const std::vector<double> part(v.begin() + static_cast<std::ptrdiff_t>(done),
+                                   v.begin() + static_cast<std::ptrdiff_t>(done + n));
+    const auto start = Clock::now();
+    Table t;
+    {
+      py::gil_scoped_release release;
+      t = api::collide_columns(inputs, part);
+    }
+    check_signals();
+    if (all.columns.empty()) all.columns = t.columns;
+    for (auto& row : t.rows) all.rows.push_back(std::move(row));
+    done += n;
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double fits = seconds > 0.0 ? target * static_cast<double>(n) / seconds : 2.0 * static_cast<double>(n);
+    piece = static_cast<std::size_t>(std::clamp(fits, 1.0, std::min(2.0 * static_cast<double>(n), 4096.0)));
+  } while (done < v.size());
+  return all;
+}
+
+std::size_t column_of(const Table& t, const char* name) {
+  return static_cast<std::size_t>(std::find(t.columns.begin(), t.columns.end(), name) - t.columns.begin());
+}
+
 // collide() over an array of speeds: the columns of the front door's curve, each an array
 // of the input's shape, and `stick` (bool) beside `outcome`.
 py::dict collide_many(const api::Inputs& inputs, const Array& speeds) {
   const std::vector<double> v(speeds.data(), speeds.data() + speeds.size());
-  Table t;
-  {
-    py::gil_scoped_release release;
-    t = api::collide_columns(inputs, v);
+  const Table t = collide_in_pieces(inputs, v);
+  const std::size_t velocity = column_of(t, "velocity"), outcome = column_of(t, "outcome");
+  py::array_t<bool> stick(shape_of(speeds));
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const auto& row = t.rows[i];
+    Record r;
+    for (std::size_t c = 0; c < t.columns.size(); ++c) r.set(t.columns[c], row[c]);
+    require_finite_results(r, row[velocity].number());
+    stick.mutable_data()[i] = row[outcome].text() == "stick";
   }
   py::dict d = table_to_python(t);
+  if (t.rows.empty()) d["outcome"] = py::module_::import("numpy").attr("asarray")(py::list(), "str");
   const py::tuple shape = py::cast(shape_of(speeds));
   for (const auto& [key, column] : d) d[key] = column.attr("reshape")(shape);
-  d["stick"] = d["outcome"].attr("__eq__")(py::str("stick"));
+  d["stick"] = stick;
   return d;
 }
 
 py::object collide(const PyPair& pair, const PyModel& model, const py::object& velocity, const py::kwargs& options) {
   api::Inputs in = case_inputs(pair, model, options);
-  if (!is_number(velocity)) return collide_many(in, velocity.cast<Array>());
-  in["velocity"] = velocity.cast<double>();
+  const auto speeds = to_numbers("velocity", velocity);
+  if (const Array* many = std::get_if<Array>(&speeds)) return collide_many(in, *many);
+  const double v = std::get<double>(speeds);
+  in["velocity"] = v;
   Record out;
   {
     py::gil_scoped_release release;
     out = api::collide(in);
   }
+  require_finite_results(out, v);
   return to_python(out);
+}
+
+py::dict curve(const PyPair& pair, const PyModel& model, const py::object& velocities, const py::kwargs& options) {
+  const api::Inputs in = case_inputs(pair, model, options);
+  if (!is_number(velocities)) return collide_many(in, to_array("velocities", velocities));
+  const double one = to_number("velocities", velocities);
+  return collide_many(in, Array(std::vector<py::ssize_t>{}, &one));
+}
+
+std::vector<std::pair<std::string, double>> closed_forms_at(const api::Case& c, double v) {
+  const auto forms = analysis::named_values(analysis::closed_forms(c.pair, c.model, check_speed("velocity", v)));
+  require_finite_results(to_record(forms), v);
+  return forms;
 }
 
 py::object closed_forms(const PyPair& pair, const PyModel& model, const py::object& velocity) {
   const api::Case c = make_case(pair, model);
-  if (is_number(velocity)) {
-    return to_python(to_record(analysis::named_values(analysis::closed_forms(c.pair, c.model, velocity.cast<double>()))));
-  }
-  const Array v = velocity.cast<Array>();
-  std::map<std::string, Array> columns;  // the keys depend on the model, not on the speed
-  for (py::ssize_t i = 0; i < v.size(); ++i) {
-    for (const auto& [key, value] : analysis::named_values(analysis::closed_forms(c.pair, c.model, v.data()[i]))) {
-      columns.try_emplace(key, shape_of(v)).first->second.mutable_data()[i] = value;
-    }
-  }
+  const auto speeds = to_numbers("velocity", velocity);
+  if (const double* v = std::get_if<double>(&speeds)) return to_python(to_record(closed_forms_at(c, *v)));
+  const Array& v = std::get<Array>(speeds);
+  // the keys depend on the pair and the model, not on the speed
+  const auto keys = closed_forms_at(c, v.size() > 0 ? v.data()[0] : 1.0);
+  std::map<std::string, Array> columns;
+  std::map<std::string, double*> cells;
+  for (const auto& [key, value] : keys) cells[key] = columns.try_emplace(key, shape_of(v)).first->second.mutable_data();
+  const double* speeds_i = v.data();
+  for_each_index(v.size(), [&](py::ssize_t i) {
+    for (const auto& [key, value] : closed_forms_at(c, speeds_i[i])) cells.at(key)[i] = value;
+  });
   py::dict d;
   for (const auto& [key, column] : columns) d[py::str(key)] = column;
   return d;
 }
 
-py::dict viscoelastic_scales(const PyPair& pair, const PyModel& model, double velocity) {
+py::dict viscoelastic_scales(const PyPair& pair, const PyModel& model, const py::object& velocity) {
+  const double v = to_number("velocity", velocity);
   const api::Case c = make_case(pair, model);
-  const analysis::ViscoelasticScales s = analysis::viscoelastic_scales(c.pair, c.model, velocity);
-  py::dict d;
-  d["dissipative_constant"] = s.dissipative_constant;
-  d["force_constant"] = s.force_constant;
-  d["kappa"] = s.kappa;
-  d["characteristic_velocity"] = s.characteristic_velocity;
-  d["q"] = s.q;
-  d["reference_overlap"] = s.reference_overlap;
-  d["hertz_contact_time"] = s.hertz_contact_time;
-  return d;
+  const analysis::ViscoelasticScales s = analysis::viscoelastic_scales(c.pair, c.model, v);
+  if (!(s.dissipative_constant > 0.0)) {  // g* (8.88) = inf: the CLI's analytic refuses it the same way
+    const bool given = model.inputs.contains("A");
+    throw InvalidArgument(given ? "A" : "model", given ? format_value(s.dissipative_constant) : model.name,
+                          "a dissipative constant A > 0 s for BP04's viscoelastic scales (with A = 0 the collision is "
+                          "elastic, e = 1, and g* (8.88) is infinite)");
+  }
+  Record r;
+  r.set("dissipative_constant", s.dissipative_constant)
+      .set("force_constant", s.force_constant)
+      .set("kappa", s.kappa)
+      .set("characteristic_velocity", s.characteristic_velocity)
+      .set("q", s.q)
+      .set("reference_overlap", s.reference_overlap)
+      .set("hertz_contact_time", s.hertz_contact_time);
+  require_finite_results(r, v);
+  return to_python(r);
 }
 
 py::object sticking(const PyPair& pair, const PyModel& model, const py::kwargs& options) {
@@ -80,7 +161,14 @@ py::object sticking(const PyPair& pair, const PyModel& model, const py::kwargs& 
     py::gil_scoped_release release;
     out = api::sticking(in);
   }
+  check_signals();
   return to_python(out);
+}
+
+py::object sticking_velocity(const PyPair& pair, const PyModel& model, const py::object& relative_tolerance) {
+  py::kwargs options;
+  options["relative_tolerance"] = relative_tolerance;
+  return sticking(pair, model, options)["sticking_velocity"];  // None: no threshold below c_t
 }
 
 }  // namespace
@@ -93,26 +181,30 @@ void bind_collisions(py::module_& m) {
         "follow_time [s] (krijt, jkr-viscoelastic), and any numerical setting of the model (method, tolerance, "
         "adhesive_tolerance, stiff_engine). An array of speeds gives a dict of arrays of its shape (velocity, cor, "
         "outcome, stick, contact_time, max_overlap, bulk_dissipated, crack_dissipated; cor_tangential when oblique), "
-        "computed in C++.");
+        "computed in C++ (Ctrl-C interrupts it).");
+  m.def("curve", &curve, py::arg("pair"), py::arg("model"), py::arg("velocities"),
+        "The COR curve over an array of impact speeds [m/s] (the CLI's `bounce curve`): collide() over the array, a "
+        "dict of arrays of its shape (velocity, cor, outcome, stick, contact_time, max_overlap, bulk_dissipated, "
+        "crack_dissipated; cor_tangential with a tangential_velocity), the loop in C++ (Ctrl-C interrupts it).");
   m.def("closed_forms", &closed_forms, py::arg("pair"), py::arg("model"), py::arg("velocity"),
-        "The closed forms beside a collision: K13 (22) hertz_time_k13_22, (24) e_jkr, (25) sticking_velocity_k13_25 "
-        "and the exact sticking_velocity_jkr, (26) e_d, (27) e_i, (11) tabor_parameter; BP04 (8.95), (8.98) for "
-        "adhesive-viscoelastic; K13 (28), (29), (33) with a yield strength. An array of speeds gives arrays.");
+        "The closed forms that apply to the pair and model at impact speed(s) `velocity` [m/s]: K13 (22) "
+        "hertz_time_k13_22 always; with a surface energy (gamma > 0) (24) e_jkr, (25) sticking_velocity_k13_25 and the "
+        "exact sticking_velocity_jkr, (11) tabor_parameter; with a dissipative constant A (26) e_d and "
+        "dissipative_constant, and (27) e_i with both; BP04 (8.95), (8.98) for adhesive-viscoelastic; K13 (28), "
+        "(29), (33) with a yield strength. A key that does not apply is absent (docs/python.md). An array of "
+        "speeds gives arrays.");
   m.def("viscoelastic_scales", &viscoelastic_scales, py::arg("pair"), py::arg("model"), py::arg("velocity"),
-        "BP04 §8.3 scales of a Hertz-type collision: A [s], C0, kappa (8.70), g* (8.88) [m/s], q = (g/g*)^{1/5}, "
-        "xi0 (8.65) [m], the exact Hertz contact time [s].");
+        "BP04 §8.3 scales of a Hertz-type collision with A > 0: A [s], C0, kappa (8.70), g* (8.88) [m/s], "
+        "q = (g/g*)^{1/5}, xi0 (8.65) [m], the exact Hertz contact time [s].");
   m.def("sticking", &sticking, py::arg("pair"), py::arg("model"),
         "The sticking velocity of an adhesive model with its bracket, the collisions it took and the closed forms: "
-        "the keys of `bounce sticking --json` (keyword relative_tolerance, default 1e-6).");
-  m.def(
-      "sticking_velocity",
-      [](const PyPair& pair, const PyModel& model, double relative_tolerance) {
-        py::kwargs options;
-        options["relative_tolerance"] = relative_tolerance;
-        return sticking(pair, model, options)["sticking_velocity"].cast<double>();
-      },
-      py::arg("pair"), py::arg("model"), py::arg("relative_tolerance") = 1e-6,
-      "The sticking velocity [m/s] of an adhesive model (bisection on the outcome).");
+        "the keys of `bounce sticking --json` (keyword relative_tolerance, default 1e-6). sticking_velocity is None, "
+        "with a note, where the grains stick at every speed up to the transversal sound speed.");
+  m.def("sticking_velocity", &sticking_velocity, py::arg("pair"), py::arg("model"),
+        py::arg("relative_tolerance") = 1e-6,
+        "The sticking velocity [m/s] of an adhesive model (bisection on the outcome to relative_tolerance), or None "
+        "where the grains stick at every speed up to the transversal sound speed (no threshold where the "
+        "quasi-static models hold).");
 }
 
 }  // namespace bounce::python

@@ -1,9 +1,16 @@
 // ContactLaw (a static contact law bound to a pair) and contact_laws().
+#include <cmath>
 #include <memory>
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include <pybind11/stl.h>
 
 #include "bounce/contact/law.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
 #include "objects.hpp"
 
 namespace bounce::python {
@@ -17,25 +24,55 @@ struct PyContactLaw {
 
 using ContactAt = contact::ContactPoint (contact::ContactLaw::*)(double) const;
 
+// One point of the law, never inf or NaN: a point beyond double precision (overlap 1e308 of
+// Hertz gives an infinite force) is refused naming the input, as is one the law's solver
+// cannot reach (its message, where the library throws something other than its own error).
+contact::ContactPoint contact_point(const PyContactLaw& l, ContactAt at, const char* name, double x) {
+  contact::ContactPoint p;
+  try {
+    p = ((*l.law).*at)(x);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::logic_error& e) {  // boost's root finders: std::domain_error
+    throw InvalidArgument(name, format_value(x), fmt::format("a value at which the {} law can be solved ({})",
+                                                             l.law->name(), e.what()));
+  } catch (const std::runtime_error& e) {  // boost's evaluation and overflow errors
+    throw InvalidArgument(name, format_value(x), fmt::format("a value at which the {} law can be solved ({})",
+                                                             l.law->name(), e.what()));
+  }
+  for (const auto& [key, value] : {std::pair{"contact_radius", p.contact_radius}, {"overlap", p.overlap},
+                                   {"force", p.force}}) {
+    if (!std::isfinite(value)) {
+      throw InvalidArgument(name, format_value(x),
+                            fmt::format("a value at which the {} law's point is finite in double precision ({} = {})",
+                                        l.law->name(), key, format_value(value)));
+    }
+  }
+  return p;
+}
+
 // law->*at for a float (-> dict) or an array (-> dict of arrays of its shape).
-py::object contact_points(const PyContactLaw& l, ContactAt at, const py::object& x) {
-  if (is_number(x)) {
-    const auto p = ((*l.law).*at)(x.cast<double>());
+py::object contact_points(const PyContactLaw& l, ContactAt at, const char* name, const py::object& x) {
+  const auto values = to_numbers(name, x);
+  if (const double* one = std::get_if<double>(&values)) {
+    const auto p = contact_point(l, at, name, *one);
     py::dict d;
     d["contact_radius"] = p.contact_radius;
     d["overlap"] = p.overlap;
     d["force"] = p.force;
     return d;
   }
-  const Array in = x.cast<Array>();
+  const Array& in = std::get<Array>(values);
   const std::vector<py::ssize_t> shape(in.shape(), in.shape() + in.ndim());
   Array a(shape), delta(shape), force(shape);
-  for (py::ssize_t i = 0; i < in.size(); ++i) {
-    const auto p = ((*l.law).*at)(in.data()[i]);
-    a.mutable_data()[i] = p.contact_radius;
-    delta.mutable_data()[i] = p.overlap;
-    force.mutable_data()[i] = p.force;
-  }
+  const double* x_i = in.data();
+  double *a_i = a.mutable_data(), *delta_i = delta.mutable_data(), *force_i = force.mutable_data();
+  for_each_index(in.size(), [&](py::ssize_t i) {
+    const auto p = contact_point(l, at, name, x_i[i]);
+    a_i[i] = p.contact_radius;
+    delta_i[i] = p.overlap;
+    force_i[i] = p.force;
+  });
   py::dict d;
   d["contact_radius"] = a;
   d["overlap"] = delta;
@@ -60,6 +97,12 @@ py::object state(const PyContactLaw& l, const py::object& force, const py::objec
   {
     py::gil_scoped_release release;
     out = api::contact(in);
+  }
+  if (const std::string bad = non_finite(out); !bad.empty()) {
+    const char* name = overlap.is_none() ? "force" : "overlap";
+    throw InvalidArgument(name, value_text(in.count(name) ? in.at(name) : ParameterValue{0.0}),
+                          fmt::format("a value at which every result of the {} law is finite in double precision ({})",
+                                      l.law->name(), bad));
   }
   return to_python(out);
 }
@@ -97,17 +140,22 @@ void bind_contact(py::module_& m) {
            "curvature_radii, curvature_radii2, angle for hertz between convex bodies).")
       .def_property_readonly("name", [](const PyContactLaw& l) { return std::string(l.law->name()); })
       .def(
-          "at_force", [](const PyContactLaw& l, const py::object& f) { return contact_points(l, &contact::ContactLaw::at_force, f); },
+          "at_force",
+          [](const PyContactLaw& l, const py::object& f) {
+            return contact_points(l, &contact::ContactLaw::at_force, "force", f);
+          },
           py::arg("force"),
           "Stable state at normal force(s) F [N] (force control): dict of contact_radius [m], overlap [m], force [N]")
       .def(
           "at_overlap",
-          [](const PyContactLaw& l, const py::object& d) { return contact_points(l, &contact::ContactLaw::at_overlap, d); },
+          [](const PyContactLaw& l, const py::object& d) {
+            return contact_points(l, &contact::ContactLaw::at_overlap, "overlap", d);
+          },
           py::arg("overlap"), "Stable state at overlap(s) delta [m] (displacement control)")
       .def(
           "at_contact_radius",
           [](const PyContactLaw& l, const py::object& a) {
-            return contact_points(l, &contact::ContactLaw::at_contact_radius, a);
+            return contact_points(l, &contact::ContactLaw::at_contact_radius, "contact_radius", a);
           },
           py::arg("contact_radius"), "The point of the law's curve with contact radius a [m] (stable or not)")
       .def("state", &state, py::arg("force") = py::none(), py::arg("overlap") = py::none(),

@@ -1,25 +1,36 @@
 // Pair, Model and the listings (materials, models).
 #include "objects.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <stdexcept>
+#include <utility>
+
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/pair/materials_table.hpp"
+#include "bounce/pair/pair_parameters.hpp"
 
 namespace bounce::python {
 
 namespace {
 
-// Python's wall="none" | "elastic" | "rigid" as the pair's flags wall and rigid_wall.
+// Python's wall="none" | "elastic" | "rigid" as the pair's flags wall and rigid_wall (a
+// bool is the flag wall itself: True for an elastic wall).
 api::Inputs pair_inputs(const py::kwargs& kwargs) {
   py::kwargs rest;
   std::string wall = "none";
   for (const auto& [key, value] : kwargs) {
-    if (key.cast<std::string>() == "wall" && py::isinstance<py::str>(value)) {
+    if (key.cast<std::string>() != "wall" || value.is_none() || PyBool_Check(value.ptr())) {
+      rest[key] = value;
+    } else if (py::isinstance<py::str>(value)) {
       wall = value.cast<std::string>();
     } else {
-      rest[key] = value;
+      refuse_type("wall", value, "a str: one of none, elastic, rigid");
     }
   }
   api::Inputs in = to_inputs(rest);
@@ -33,9 +44,25 @@ api::Inputs pair_inputs(const py::kwargs& kwargs) {
   return in;
 }
 
+// The pair's derived quantities are never inf or 0 (R = 1e100 of water ice gave m_eff =
+// m1 m2/(m1 + m2) = inf): refused here, naming the radius, where the library lets one through.
+void require_normal_quantities(const Pair& pair, const api::Inputs& in) {
+  const std::pair<const char*, double> derived[] = {{"effective radius R_eff [m]", pair.effective_radius()},
+                                                    {"effective mass m_eff [kg]", pair.effective_mass()},
+                                                    {"effective modulus E* [Pa]", pair.effective_modulus()}};
+  for (const auto& [what, x] : derived) {
+    if (std::isnormal(x)) continue;
+    const auto r = in.find("radius");
+    throw InvalidArgument("radius", r == in.end() ? "(not given)" : value_text(r->second),
+                          fmt::format("a pair whose {} is finite and > 0 in double precision (it is {})", what,
+                                      format_value(x)));
+  }
+}
+
 PyPair make_py_pair(const py::kwargs& kwargs) {
   api::Inputs in = pair_inputs(kwargs);
   Pair pair = api::make_pair(in);
+  require_normal_quantities(pair, in);
   return PyPair{std::move(in), std::move(pair)};
 }
 
@@ -59,10 +86,44 @@ py::dict material_dict(const std::string& name) {
 
 }  // namespace
 
+double check_speed(const char* python_name, double velocity) {
+  static const ParameterSpec spec = [] {
+    for (const ParameterSpec& s : api::command("collide").parameters) {
+      if (s.name == "velocity") return s;
+    }
+    throw std::logic_error("bounce collide declares no velocity");
+  }();
+  try {
+    bind_parameters(std::span(&spec, 1), api::Inputs{{"velocity", velocity}}, "bounce collide");
+  } catch (const InvalidArgument& e) {
+    throw e.renamed(python_name);
+  }
+  return velocity;
+}
+
 api::Inputs case_inputs(const PyPair& pair, const PyModel& model, const py::kwargs& options) {
   api::Inputs in = pair.inputs;
   for (const auto& [key, value] : model.inputs) in[key] = value;
   in["model"] = model.name;
+  // The Pair and the Model hold their parameters: a call keyword adds a setting, it does not
+  // silently replace what the Pair or the Model says (radius=..., A=... given twice).
+  const auto& pair_specs = pair_parameters();
+  for (const auto& [key, value] : options) {
+    const std::string python = key.cast<std::string>(), name = library_name(python);
+    if (value.is_none()) continue;
+    const bool of_pair = name == "model" || std::any_of(pair_specs.begin(), pair_specs.end(),
+                                                        [&](const ParameterSpec& s) { return s.name == name; });
+    if (of_pair) {
+      throw InvalidArgument(python, py::repr(value).cast<std::string>(),
+                            fmt::format("{} in bounce.{}(...), not as a keyword of the call", python,
+                                        name == "model" ? "Model" : "Pair"));
+    }
+    if (const auto set = model.inputs.find(name); set != model.inputs.end()) {
+      throw InvalidArgument(python, py::repr(value).cast<std::string>(),
+                            fmt::format("{} once: the Model already sets {} = {}", python, python,
+                                        value_text(set->second)));
+    }
+  }
   for (const auto& [key, value] : to_inputs(options)) in[key] = value;
   return in;
 }

@@ -26,6 +26,11 @@ api::Inputs case_inputs(const PyPair& pair, const PyModel& model, const py::kwar
 /// The case (pair, model, integration options) of a collide call with these inputs.
 api::Case make_case(const PyPair& pair, const PyModel& model, const py::kwargs& options = {});
 
+/// An impact speed [m/s] checked against the declaration of collide's `velocity` (> 0 and
+/// finite), for the calls that take speeds without a collision of their own (closed forms,
+/// a table's range); the message names it `python_name`.
+double check_speed(const char* python_name, double velocity);
+
 // Registration of the module's parts (module.cpp calls them in order).
 void bind_objects(py::module_& m);      // Pair, Model, materials, models
 void bind_collisions(py::module_& m);   // collide, closed_forms, viscoelastic_scales, sticking

@@ -48,10 +48,13 @@ nlohmann::json curve_json(const PiecewiseCubic& c) {
 PiecewiseCubic curve_from_json(const nlohmann::json& nodes) {
   PiecewiseCubic c;
   for (const auto& n : nodes) {
-    c.x.push_back(n.at(0).get<double>());
-    c.f.push_back(n.at(1).get<double>());
-    c.slope.push_back(n.at(2).get<double>());
-    c.label.push_back(static_cast<double>(n.at(3).get<long>()));
+    c.x.push_back(detail::finite_field(n.at(0), "node x"));
+    c.f.push_back(detail::finite_field(n.at(1), "node cor"));
+    c.slope.push_back(detail::finite_field(n.at(2), "node slope"));
+    c.label.push_back(static_cast<double>(detail::integer_field(n.at(3), "node outcome", 0, 1)));
+    if (c.x.size() > 1 && !(c.x.back() > c.x[c.x.size() - 2])) {
+      throw InvalidArgument("table", "(nodes not increasing)", "a table written by bounce table");
+    }
   }
   if (c.x.size() < 2) throw InvalidArgument("table", "(fewer than 2 nodes)", "a table written by bounce table");
   return c;
@@ -151,10 +154,13 @@ NormalTable NormalTable::from_json(const std::string& text) {
     if (j.at("kind") != kind) throw InvalidArgument("table", "kind", "a normal table");
     NormalTable t;
     t.description = j.at("description").get<std::string>();
-    t.g_min = j.at("g_min").get<double>();
-    t.g_max = j.at("g_max").get<double>();
-    t.sticking_velocity = j.at("sticking_velocity").get<double>();
-    t.bound = j.at("bound").get<double>();
+    t.g_min = detail::finite_field(j.at("g_min"), "g_min");
+    t.g_max = detail::finite_field(j.at("g_max"), "g_max");
+    t.sticking_velocity = detail::finite_field(j.at("sticking_velocity"), "sticking_velocity");
+    t.bound = detail::finite_field(j.at("bound"), "bound");
+    if (!(t.g_min > 0.0 && t.g_max > t.g_min && t.sticking_velocity >= 0.0 && t.bound > 0.0)) {
+      throw InvalidArgument("table", "(inconsistent ranges)", "a table written by bounce table (0 < g_min < g_max, bound > 0)");
+    }
     t.curve = curve_from_json(j.at("nodes"));
     return t;
   } catch (const nlohmann::json::exception& e) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
@@ -43,6 +44,25 @@ class WarningLog {
  private:
   std::map<std::string, std::pair<double, std::string>> seen_;
 };
+
+// A whole-number field of a saved table, checked before it is converted (a float beyond
+// long's range cast to long is undefined: the fuzzer found label 1e20, order 1e10).
+inline long integer_field(const nlohmann::json& v, const char* key, long lo, long hi) {
+  const bool number = v.is_number();
+  const double x = number ? v.get<double>() : 0.0;
+  if (!number || !(x >= static_cast<double>(lo) && x <= static_cast<double>(hi)) || x != std::floor(x)) {
+    throw InvalidArgument("table", fmt::format("{} = {}", key, v.dump()),
+                          fmt::format("a whole number from {} to {} (a table written by bounce table)", lo, hi));
+  }
+  return static_cast<long>(x);
+}
+
+// A finite number field of a saved table.
+inline double finite_field(const nlohmann::json& v, const char* key) {
+  const double x = v.get<double>();
+  if (!std::isfinite(x)) throw InvalidArgument("table", fmt::format("{} = {}", key, v.dump()), "a finite number");
+  return x;
+}
 
 inline void check_range(const char* name, double lo, double hi) {
   require_positive(std::string(name) + "_min", lo, "a velocity > 0 m/s");

@@ -92,9 +92,9 @@ TangentialTable TangentialTable::from_json(const std::string& text) {
     t.gt_max = j.at("g_tangential_max").get<double>();
     t.bound = j.at("bound").get<double>();
     t.checked_error = j.at("checked_error").get<double>();
-    t.check_points = j.at("check_points").get<long>();
+    t.check_points = detail::integer_field(j.at("check_points"), "check_points", 0, 1'000'000'000'000);
     t.asperity_size = j.at("asperity_size").get<double>();
-    t.order = j.at("order").get<int>();
+    t.order = static_cast<int>(detail::integer_field(j.at("order"), "order", 2, detail::tt_max_order));
     t.x0 = j.at("x0").get<double>();
     t.dx = j.at("dx").get<double>();
     t.s = j.at("s").get<std::vector<double>>();
@@ -109,6 +109,9 @@ TangentialTable TangentialTable::from_json(const std::string& text) {
                      t.order >= 2 && t.order <= detail::tt_max_order && r >= static_cast<std::size_t>(t.order) && t.dx > 0.0 &&
                      t.asperity_size > 0.0 && t.gn_min > 0.0 && t.gn_max > t.gn_min && t.gt_min > 0.0 &&
                      t.gt_max > t.gt_min &&
+                     std::isfinite(t.gn_max) && std::isfinite(t.gt_max) && std::isfinite(t.asperity_size) &&
+                     std::isfinite(t.x0) && std::isfinite(t.dx) && std::isfinite(t.bound) && t.bound > 0.0 &&
+                     std::all_of(t.s.begin(), t.s.end(), [](double v) { return std::isfinite(v); }) &&
                      std::all_of(t.nodes.begin(), t.nodes.end(), [](double v) { return std::isfinite(v); }) &&
                      std::all_of(t.rows.begin(), t.rows.end(), [](double v) { return std::isfinite(v); });
   if (!shape) throw InvalidArgument("table", "(inconsistent sizes or values)", "a table written by bounce table");

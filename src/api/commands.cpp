@@ -306,7 +306,7 @@ std::vector<double> parse_range(const std::string& name, const std::string& text
   for (long i = 0; i < n; ++i) {
     const double f = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
     values[static_cast<std::size_t>(i)] =
-        log ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo))) : lo + f * (hi - lo);
+        log ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo))) : (1.0 - f) * lo + f * hi;  // hi - lo may overflow
   }
   values.front() = lo;
   values.back() = hi;
