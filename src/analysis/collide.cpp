@@ -226,6 +226,23 @@ CollideOptions collide_options(const Parameters& p) {
   return o;
 }
 
+void require_impact_velocity(const Pair& pair, double velocity) {
+  require_positive("velocity", velocity, "impact velocity [m/s]");
+  // Above the transversal sound speed the quasi-static models end (BSHP96 (B11)): a
+  // collision there is not a result of any of them (1e308 m/s gave infinities, 1e30 m/s
+  // spent seconds on the step budget).
+  const double c_t = pair.transversal_sound_speed();
+  if (velocity > c_t) {
+    throw InvalidArgument("velocity", format_value(velocity),
+                          fmt::format("an impact velocity <= the transversal sound speed c_t = {:.4g} m/s, where the "
+                                      "quasi-static models end (BSHP96 (B11))", c_t));
+  }
+  if (!std::isnormal(0.5 * pair.effective_mass() * velocity * velocity)) {
+    throw InvalidArgument("velocity", format_value(velocity),
+                          "an impact velocity whose kinetic energy (1/2) m_eff g^2 is > 0 in double precision");
+  }
+}
+
 ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& model, double velocity) {
   require_positive("velocity", velocity, "impact velocity [m/s]");
   if (!model.hertz) {
@@ -250,7 +267,7 @@ ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& mo
 }
 
 CollisionOutcome collide(const Pair& pair, const models::Model& model, double velocity, const CollideOptions& options) {
-  require_positive("velocity", velocity, "impact velocity [m/s]");
+  require_impact_velocity(pair, velocity);
   if (options.tangential_velocity > 0.0 && !model.tangential) {
     throw InvalidArgument("friction", "(not given)", "a friction coefficient mu >= 0 (BSHP96 (36))");
   }

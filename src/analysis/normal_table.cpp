@@ -111,6 +111,14 @@ NormalTable build_normal_table(const Pair& pair, const models::Model& model, dou
   if (model.capabilities.adhesive) {
     const StickingVelocity v = sticking_velocity(pair, model, options, 1e-13);
     if (v.upper > g_min) t.sticking_velocity = v.upper;  // the smallest speed found to bounce
+    if (v.sticks_up_to_sound_speed || v.upper >= g_max) {
+      throw InvalidArgument("velocity_max", format_value(g_max),
+                            v.sticks_up_to_sound_speed
+                                ? std::string("a pair that bounces somewhere: it sticks at every speed up to the sound speed")
+                                : fmt::format("a range reaching above the sticking velocity {:.6g} m/s (below it the grains "
+                                              "stick, eps^N = 0: nothing to tabulate)",
+                                              v.upper));
+    }
   }
   std::size_t done = 0;
   auto tick = [&] {

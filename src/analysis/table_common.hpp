@@ -65,7 +65,7 @@ inline double finite_field(const nlohmann::json& v, const char* key) {
 }
 
 inline void check_range(const char* name, double lo, double hi) {
-  require_positive(std::string(name) + "_min", lo, "a velocity > 0 m/s");
+  require_positive(std::string(name) + "_min", lo, "velocity [m/s]");
   if (!(hi > lo) || !std::isfinite(hi)) {
     throw InvalidArgument(std::string(name) + "_max", fmt::format("{:g}", hi), fmt::format("a velocity > {:g} m/s", lo));
   }

@@ -72,6 +72,7 @@ IntegerSeries master_series_overlap() {
 }
 
 double cor_series(double q, const IntegerSeries& series) {  // BP04 (8.89)
+  require_non_negative("q", q, "the expansion variable q = (g/g*)^(1/5) (BP04 (8.89))");
   double sum = 1.0, power = 1.0;
   for (std::size_t k = 0; k < series.a.size(); ++k) {
     power *= -q;
@@ -116,6 +117,7 @@ PadeCoefficients pade_coefficients(const IntegerSeries& s) {
 PadeCoefficients bp04_printed_pade() { return {-0.029, 2.583, 3.583, 2.983, 1.148, 0.326}; }  // BP04 (8.93)
 
 double cor_pade(double q, const PadeCoefficients& d) {  // BP04 (8.92)
+  require_non_negative("q", q, "the expansion variable q = (g/g*)^(1/5) (BP04 (8.92))");
   return (1.0 + d.d1 * q) / (1.0 + q * (d.d2 + q * (d.d3 + q * (d.d4 + q * d.d5))));
 }
 

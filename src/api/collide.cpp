@@ -2,6 +2,8 @@
 // of a sweep.
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "binding.hpp"
 #include "bounce/analysis/closed_forms.hpp"
 #include "bounce/analysis/curve.hpp"
@@ -124,7 +126,13 @@ Record curve(const Inputs& inputs, const Progress& progress) {
   std::vector<dynamics::CollisionOutcome> outcomes;
   for (std::size_t i = 0; i < s.values.size(); ++i) {
     const Case c = s.by_radius ? detail::make_case(bound, s.values[i]) : first;
-    outcomes.push_back(analysis::collide(c.pair, c.model, s.by_radius ? s.velocity : s.values[i], options));
+    try {
+      outcomes.push_back(analysis::collide(c.pair, c.model, s.by_radius ? s.velocity : s.values[i], options));
+    } catch (const InvalidArgument& e) {  // a speed of the sweep: named as the option the user typed
+      if (e.parameter() != "velocity" || s.by_radius) throw;
+      throw InvalidArgument("velocities", bound.own.text("velocities"),
+                            fmt::format("speeds that are all valid: {} fails, expected {}", e.value(), e.allowed()));
+    }
     points.push_back(curve_point(outcomes.back(), s, i, c, closed));
     if (progress) progress(i + 1, s.values.size());
   }

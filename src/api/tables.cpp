@@ -21,6 +21,10 @@ auto naming_ranges(const Parameters& own, Build build) {
       if (e.parameter() == std::string(single) + "_min" || e.parameter() == std::string(single) + "_max") {
         throw InvalidArgument(range, own.text(range), e.allowed());
       }
+      if (e.parameter() == single) {  // one collision of the range refused (above c_t, say)
+        throw InvalidArgument(range, own.text(range), fmt::format("a range whose speeds are valid: {} = {} fails, expected {}",
+                                                                   single, e.value(), e.allowed()));
+      }
     }
     throw;
   }

@@ -8,6 +8,7 @@
 
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
+#include <fmt/format.h>
 
 #include "bounce/contact/law.hpp"
 #include "bounce/contact/surface_forces.hpp"
@@ -64,13 +65,21 @@ void check_lambda(double lambda) {
 template <class F>
 double largest_root(F value, double target, double a_lo) {
   double hi = std::max(2.0 * a_lo, 1.0);
-  while (value(hi) < target) hi *= 2.0;
+  while (value(hi) < target) {
+    hi *= 2.0;
+    // P ~ A^3 and Delta ~ A^2: past A = 1e60 the state is beyond double precision.
+    if (hi > 1e60) throw NumericalError("Maugis-Dugdale: the state is beyond double precision (force or overlap too large)");
+  }
   if (value(a_lo) >= target) return a_lo;
   std::uintmax_t iterations = 300;
-  auto [x0, x1] = boost::math::tools::toms748_solve(
-      [&](double A) { return value(A) - target; }, a_lo, hi,
-      boost::math::tools::eps_tolerance<double>(50), iterations);
-  return 0.5 * (x0 + x1);
+  try {
+    auto [x0, x1] = boost::math::tools::toms748_solve(
+        [&](double A) { return value(A) - target; }, a_lo, hi,
+        boost::math::tools::eps_tolerance<double>(50), iterations);
+    return 0.5 * (x0 + x1);
+  } catch (const std::domain_error& e) {  // Boost's "do not bracket": reported as bounce's own error
+    throw NumericalError(fmt::format("Maugis-Dugdale: no contact radius found ({})", e.what()));
+  }
 }
 
 // Global minimum of value(A) over A >= 0: scan, then refine with Brent.
@@ -201,15 +210,22 @@ class MaugisLaw final : public ContactLaw {
   ContactPoint at_force(double force) const override {
     const double f_c = curve_->pull_off().force * scales_.force;
     require_at_least("force", force, f_c, "force >= the Maugis-Dugdale pull-off force ", " N");
-    return to_si(curve_->at_force(std::max(force / scales_.force, curve_->pull_off().force)));
+    try {
+      return to_si(curve_->at_force(std::max(force / scales_.force, curve_->pull_off().force)));
+    } catch (const NumericalError&) {
+      throw InvalidArgument("force", format_value(force), "a force whose contact state is within double precision");
+    }
   }
 
   ContactPoint at_overlap(double overlap) const override {
     const double delta_c = curve_->min_overlap().overlap * scales_.overlap;
     require_at_least("overlap", overlap, delta_c,
                      "overlap >= ", " m (Maugis-Dugdale contact breaks at more negative overlap)");
-    return to_si(
-        curve_->at_overlap(std::max(overlap / scales_.overlap, curve_->min_overlap().overlap)));
+    try {
+      return to_si(curve_->at_overlap(std::max(overlap / scales_.overlap, curve_->min_overlap().overlap)));
+    } catch (const NumericalError&) {
+      throw InvalidArgument("overlap", format_value(overlap), "an overlap whose contact state is within double precision");
+    }
   }
 
   ContactPoint at_contact_radius(double a) const override {

@@ -82,6 +82,7 @@ Pair::Pair(Body body1, Body body2) : body1_(std::move(body1)), body2_(std::move(
   }
   require_normal(effective_radius_, "body1.radius", body1_.radius, "effective radius R1 R2/(R1 + R2)");
   require_normal(effective_modulus_, "body1.youngs_modulus", body1_.material.youngs_modulus, "effective modulus E*");
+  require_normal(effective_mass_, "body1.radius", body1_.radius, "effective mass m1 m2/(m1 + m2)");
 }
 
 Pair Pair::identical(Material material, double radius) {

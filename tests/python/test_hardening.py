@@ -236,8 +236,6 @@ def test_extreme_values_give_finite_results_or_an_error(model):
                 assert "\n" not in str(e)
 
 
-@pytest.mark.xfail(strict=True, reason="library: an impact velocity far beyond the sound speed is not refused as an "
-                                       "input; the engines fail numerically (RuntimeError) instead")
 @pytest.mark.parametrize("model,parameters,velocity", [
     ("krijt", {"tvis": 1e-11}, 1e308),
     ("power-law", {"power_d1": 1e17, "power_d2": 1e7}, 1e-300),

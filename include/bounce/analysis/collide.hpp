@@ -53,9 +53,13 @@ struct MergedBody {
 };
 MergedBody merged_body(const Pair& pair, double velocity);
 
+/// InvalidArgument("velocity") unless 0 < g <= the transversal sound speed c_t (BSHP96
+/// (B11): the quasi-static models end there) and (1/2) m_eff g^2 is a normal double.
+void require_impact_velocity(const Pair& pair, double velocity);
+
 /// One head-on (or, with a tangential velocity, oblique) collision at impact speed
 /// `velocity` [m/s]: COR, outcome, contact time, maximum overlap, energy budget, warnings
-/// about validity (BSHP96 App. B). InvalidArgument for a speed that is not > 0 and finite.
+/// about validity (BSHP96 App. B). InvalidArgument for a speed require_impact_velocity refuses.
 dynamics::CollisionOutcome collide(const Pair& pair, const models::Model& model, double velocity,
                                    const CollideOptions& options = {});
 

@@ -82,10 +82,19 @@ TEST(CliHardening, RulesInputFilesAndFields) {
   EXPECT_LT(out["energy_change"].get<double>(), 0.0);
 }
 
-TEST(CliHardening, RulesAtAnExtremelySlowApproachUseTheModelsOwnCor) {
+TEST(CliHardening, RulesAtAnExtremelySlowApproachFollowCollidesRule) {
+  // The same rule as `collide --velocity 1e-300`: an impact energy below double precision is
+  // refused, naming the file's encounter.
   const std::string path = write_file(
       "bounce-rules-slow.json", R"({"normal": [1, 0, 0], "grain1": {"velocity": [-1e-300, 0, 0]}, "grain2": {"velocity": [0, 0, 0]}})");
-  const auto r = run_cli({"rules", "--material", "water-ice", "--radius", "1e-3", "--A", "1e-6", "--input", path});
+  expect_rejected({"rules", "--material", "water-ice", "--radius", "1e-3", "--A", "1e-6", "--input", path},
+                  path + ": velocity", "1e-300");
+  expect_rejected({"collide", "--material", "water-ice", "--radius", "1e-3", "--A", "1e-6", "--velocity", "1e-300"},
+                  "--velocity", "1e-300");
+  // At 1e-9 m/s the model's own e^N (just below 1) is used and is <= 1.
+  const std::string slow = write_file(
+      "bounce-rules-slow.json", R"({"normal": [1, 0, 0], "grain1": {"velocity": [-1e-9, 0, 0]}, "grain2": {"velocity": [0, 0, 0]}})");
+  const auto r = run_cli({"rules", "--material", "water-ice", "--radius", "1e-3", "--A", "1e-6", "--input", slow});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_LE(nlohmann::json::parse(r.out)["cor"].get<double>(), 1.0);
 }
