@@ -107,7 +107,7 @@ Value rules(const Inputs& inputs, std::string_view encounters) {
   nlohmann::json in;
   try {
     in = nlohmann::json::parse(encounters);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse errors, and numbers beyond double (1e400)
     throw InvalidArgument("encounters", "(not JSON)", fmt::format("JSON ({})", e.what()));
   }
   detail::Bound bound = detail::bind_inputs(command("rules"), inputs);

@@ -72,6 +72,10 @@ TEST(CliHardening, RulesInputFilesAndFields) {
     const std::string path = write_file("bounce-rules-bad.json", head + R"(, "cor": 0.5, "cor_tangential": )" + bad + "}");
     expect_rejected(cmd("rules", body, {"--input", path}), path + ": cor_tangential", bad);
   }
+  // A number beyond double precision (the fuzzer's 1e400) is malformed JSON for bounce, not exit 4.
+  const std::string huge = write_file("bounce-rules-huge.json",
+                                      R"({"normal": [1e400, 0, 0], "grain1": {"velocity": [-1, 0, 0]}, "grain2": {"velocity": [0, 0, 0]}, "cor": 0.5})");
+  expect_rejected(cmd("rules", body, {"--input", huge}), "--input", huge);
   // eps^T given without eps^N: used, with the model's eps^N.
   const std::string path = write_file("bounce-rules-et.json", head + R"(, "cor_tangential": 0.25})");
   const auto r = run_cli(cmd("rules", body, {"--input", path}));
