@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Install the Debian packages bounce needs, only those that are missing.
 # Uses sudo when not root. Safe to run repeatedly (a no-op when all are present).
-# Extra packages for one target come as arguments (`make lint`: clang-tidy).
+# Extra packages for one target come as arguments (`make lint`: clang-tidy; `make test`,
+# `make test-sanitize`, `make fuzz`: clang, libclang-rt-dev and ccache, the sanitizer build).
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
   libboost-dev libsundials-dev libcli11-dev libtomlplusplus-dev
-  nlohmann-json3-dev libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  nlohmann-json3-dev libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev
   pybind11-dev python3 python3-dev python3-numpy python3-matplotlib
   python3-scipy python3-pytest
   "$@"
