@@ -23,9 +23,11 @@
 // GCC 12 reports odeint's steppers as copying uninitialised work buffers when
 // they are built inline (make_controlled(..., stepper())); the buffers are
 // written before they are read. Silence only these two diagnostics, here.
+#if defined(__GNUC__) && !defined(__clang__)  // GCC's false positives; clang has no -Wmaybe-uninitialized
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <boost/numeric/odeint.hpp>
 
 namespace bounce::reference {
@@ -192,4 +194,6 @@ inline MasterQuantities master_quantities(Real kappa, bool need_overlap = true, 
 
 }  // namespace bounce::reference
 
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif

@@ -38,7 +38,9 @@ std::variant<analysis::NormalTable, analysis::TangentialTable> table(const Input
   own.refuse_given(std::array{"velocity", "tangential_velocity"},
                    "a saved table to read (they are the speeds at which to read it)");
   if (!own.given("velocities")) throw InvalidArgument("velocities", "(not given)", "LO:HI in m/s (the table's range)");
-  const auto [lo, hi] = detail::parse_interval("velocities", own.text("velocities"));
+  // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+  const auto range = detail::parse_interval("velocities", own.text("velocities"));
+  const double lo = range[0], hi = range[1];
   const bool tangential = own.given("tangential_velocities");
   const auto gt = tangential ? detail::parse_interval("tangential_velocities", own.text("tangential_velocities"))
                              : std::array<double, 2>{};

@@ -89,7 +89,7 @@ using Solve = void (*)(const double*, const int*, double*);
 template <int... Sizes>
 std::pair<Factorize, Solve> linear_algebra(int n, std::integer_sequence<int, Sizes...>) {
   std::pair<Factorize, Solve> out{nullptr, nullptr};
-  ((n == Sizes + 1 ? (out = {&lu_factorize<Sizes + 1>, &lu_solve<Sizes + 1>}, true) : false) || ...);
+  (void)((n == Sizes + 1 ? (out = {&lu_factorize<Sizes + 1>, &lu_solve<Sizes + 1>}, true) : false) || ...);  // clang: -Wunused-value
   return out;
 }
 

@@ -48,7 +48,7 @@ TEST(Independent, PressureIntegratesToForce) {
     // the integrand is analytic on [0, 1], so 30-point Gauss-Legendre is exact to
     // round-off. The round-off of a - r is eps/u^2 relative; the smallest node is
     // u = 1.6e-3 with weight 4e-3, so it contributes ~2e-13: bound 1e-11.
-    auto integrand = [&](double u) {
+    auto integrand = [&, a = a, delta = delta](double u) {  // clang 14 cannot capture a structured binding
       const double r = a * (1.0 - u * u);
       return 2.0 * std::numbers::pi * r * contact::independent::pressure(g, a, delta, r) * 2.0 * a * u;
     };
