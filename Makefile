@@ -1,23 +1,40 @@
 # bounce: the two commands are `make demo` and `make test`.
 #   make        configure + build (CLI at build/bin/bounce, Python at build/python)
-#   make test   install missing Debian packages, build, run every C++ and Python test
+#   make test   install missing Debian packages, build, run every C++ and Python test, then
+#               the C++ tests and short fuzz runs again under ASan+UBSan (make test-sanitize)
 #   make demo   install missing Debian packages, build, run the main job into out/
 #   make bench  build and run the benchmarks (not part of `make test`)
 #   make check-long  opt-in long sweeps (results recorded in docs/)
 #   make lint        opt-in: functions over 60 lines, files over 400 (clang-tidy), layering
+#   make test-sanitize  the C++ tests and 15 s of each fuzz target, built with clang,
+#                    AddressSanitizer and UndefinedBehaviorSanitizer in build-asan
+#   make fuzz        each fuzz target for FUZZ_SECONDS (default 600) in build-asan
+#                    (docs/hardening.md)
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 WERROR    ?= ON
 PYTHON    := /usr/bin/python3
 CMAKE_FLAGS ?=
+ASAN_DIR  ?= build-asan
+FUZZ_SECONDS ?= 600
+FUZZ_TARGETS ?= materials table rules ranges cli
+# The sanitizer build's own packages (clang with its sanitizer and libFuzzer runtimes).
+SANITIZE_DEPS := clang libclang-rt-dev ccache
+# Every report ends the process with an error, leaks included (docs/hardening.md).
+SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:strict_init_order=1 \
+  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
-.PHONY: all build deps configure test demo bench check-long lint clean
+.PHONY: all build deps deps-sanitize configure test demo bench check-long lint clean \
+        build-sanitize test-sanitize fuzz
 
 all: build
 
 deps:
 	@./scripts/install-deps.sh
+
+deps-sanitize:
+	@./scripts/install-deps.sh $(SANITIZE_DEPS)
 
 $(BUILD_DIR)/CMakeCache.txt:
 	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release \
@@ -28,9 +45,30 @@ configure: $(BUILD_DIR)/CMakeCache.txt
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-test: deps
+test: deps-sanitize
 	@$(MAKE) --no-print-directory build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE long
+	@$(MAKE) --no-print-directory test-sanitize
+
+# The sanitizer build: clang (libFuzzer), no Python extension, no benchmarks.
+$(ASAN_DIR)/CMakeCache.txt:
+	cmake -S . -B $(ASAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_COMPILER=/usr/bin/clang++ -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+	  -DBOUNCE_SANITIZE=ON -DBOUNCE_FUZZ=ON -DBOUNCE_BUILD_PYTHON=OFF -DBOUNCE_BUILD_BENCH=OFF \
+	  -DBOUNCE_WERROR=$(WERROR) -DPython3_EXECUTABLE=$(PYTHON)
+
+build-sanitize: $(ASAN_DIR)/CMakeCache.txt
+	cmake --build $(ASAN_DIR) -j $(JOBS)
+
+# Not here: pytest (no extension in this build) and the find_package consumer (built by the
+# system compiler, without the sanitizers' runtime).
+test-sanitize: deps-sanitize
+	@$(MAKE) --no-print-directory build-sanitize
+	cd $(ASAN_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE 'long|python|packaging'
+
+fuzz: deps-sanitize
+	@$(MAKE) --no-print-directory build-sanitize
+	$(SANITIZE_ENV) ./fuzz/run.sh --keep-going --seconds $(FUZZ_SECONDS) $(ASAN_DIR) $(FUZZ_TARGETS)
 
 demo: deps
 	@$(MAKE) --no-print-directory build
@@ -50,4 +88,4 @@ lint: build
 	./tools/check_sizes.sh $(BUILD_DIR)
 
 clean:
-	rm -rf $(BUILD_DIR) out
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) out
