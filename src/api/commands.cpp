@@ -303,11 +303,16 @@ std::vector<double> parse_range(const std::string& name, const std::string& text
   if (n < 1 || lo > hi) throw InvalidArgument(name, text, allowed);
   if (n == 1 && lo != hi) throw InvalidArgument(name, text, "LO:HI:N with N >= 2 from LO to HI (one point: LO = HI)");
   if (log && lo <= 0.0) throw InvalidArgument(name, text, "LO > 0 with log");
-  std::vector<double> values(static_cast<std::size_t>(n));
+  std::vector<double> values(static_cast<std::size_t>(n), lo);
+  if (lo == hi) return values;  // N copies (exp(log 3) need not be 3: the fuzzer's 3:3:127)
+  const double span = hi - lo;
+  const bool finite = std::isfinite(span);
   for (long i = 0; i < n; ++i) {
     const double f = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
     values[static_cast<std::size_t>(i)] =
-        log ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo))) : (1.0 - f) * lo + f * hi;  // hi - lo may overflow
+        log      ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo)))
+        : finite ? lo + f * span
+                 : (1.0 - f) * lo + f * hi;  // HI - LO overflows (-1e308:1e308); both forms are monotone in f
   }
   values.front() = lo;
   values.back() = hi;

@@ -1,4 +1,6 @@
 // The front door's static contact: one state of a law, or its curve.
+#include <fmt/format.h>
+
 #include "binding.hpp"
 #include "bounce/contact/law.hpp"
 #include "bounce/contact/surface_forces.hpp"
@@ -84,12 +86,15 @@ Table contact_curve(const Inputs& inputs) {
   Table t;
   t.columns = {"contact_radius", "overlap", "force"};
   auto add = [&](const contact::ContactPoint& p) { t.rows.push_back({p.contact_radius, p.overlap, p.force}); };
-  if (c.own.given("forces")) {
-    for (double v : detail::parse_range("forces", c.own.text("forces"), log)) add(c.law->at_force(v));
-  } else if (c.own.given("overlaps")) {
-    for (double v : detail::parse_range("overlaps", c.own.text("overlaps"), log)) add(c.law->at_overlap(v));
-  } else {
-    for (double v : detail::parse_range("contact_radii", c.own.text("contact_radii"), log)) add(c.law->at_contact_radius(v));
+  const char* range = c.own.given("forces") ? "forces" : c.own.given("overlaps") ? "overlaps" : "contact_radii";
+  for (double v : detail::parse_range(range, c.own.text(range), log)) {
+    try {
+      const std::string_view r = range;
+      add(r == "forces" ? c.law->at_force(v) : r == "overlaps" ? c.law->at_overlap(v) : c.law->at_contact_radius(v));
+    } catch (const InvalidArgument& e) {  // a point of the range, named as the option the user typed
+      throw InvalidArgument(range, c.own.text(range),
+                            fmt::format("values that are all valid: {} fails, expected {}", e.value(), e.allowed()));
+    }
   }
   return t;
 }

@@ -158,6 +158,12 @@ TEST(CliHardening, ContradictoryOrUnusedOptionsAreRefused) {
   expect_rejected(cmd("contact", ice, {"--forces", "1:2:3"}), "--forces", "1:2:3");
   expect_rejected(cmd("contact", ice, {"--overlaps", "1e-9:1e-8:3"}), "--overlaps", "1e-9:1e-8:3");
   expect_rejected(cmd("contact", ice, {"--contact-radii", "1e-6:1e-5:3"}), "--contact-radii", "1e-6:1e-5:3");
+  // A point of a range that the law refuses names the range, not --force.
+  expect_rejected(cmd("contact", ice, {"--law", "dmt", "--csv", "--forces", "-1:1:3"}), "--forces", "-1:1:3");
+  // LO = HI: N equal points (the fuzzer's 3:3:127 gave a decreasing range).
+  const auto same = run_cli(cmd("contact", ice, {"--csv", "--overlaps", "3e-9:3e-9:127"}));
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_EQ(count_lines(same.out), 128);
 }
 
 TEST(CliHardening, ParserErrorsFollowTheOneLineRule) {
