@@ -10,6 +10,9 @@ void validate(const Material& m, const FieldNamer& name_of) {
   require_positive(name_of("density"), m.density, "density [kg/m^3]");
   if (m.surface_energy) {
     require_non_negative(name_of("gamma"), *m.surface_energy, "surface energy gamma [J/m^2]");
+    if (*m.surface_energy > 1e3) {  // the bound of --gamma (pair_parameters.cpp): W0 overflows far above it
+      throw InvalidArgument(name_of("gamma"), format_value(*m.surface_energy), "0 <= surface energy gamma [J/m^2] <= 1000");
+    }
   }
 }
 

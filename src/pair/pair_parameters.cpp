@@ -23,7 +23,10 @@ void add_body(std::vector<ParameterSpec>& out, const std::string& n) {
   out.push_back(real_parameter("E" + n, "Young's modulus E", "Pa", positive(), which + " Young's modulus [Pa]" + note));
   out.push_back(real_parameter("nu" + n, "Poisson ratio nu", "", open_interval(-1.0, 0.5), which + " Poisson ratio" + note));
   out.push_back(real_parameter("density" + n, "density", "kg/m^3", positive(), which + " density [kg/m^3]" + note));
-  out.push_back(real_parameter("gamma" + n, "surface energy gamma", "J/m^2", non_negative(),
+  // At most 1e3 J/m^2: solids lie below ~10 (K13 table 2: 0.014-1.6); 1e300 overflowed the
+  // adhesion work W0 of BP04 (8.95) in a warning (found by the CLI fuzzer).
+  const Range surface_energy{0.0, 1e3, true, true, false};
+  out.push_back(real_parameter("gamma" + n, "surface energy gamma", "J/m^2", surface_energy,
                                which + " surface energy (work of adhesion) [J/m^2]" + note));
   out.push_back(real_parameter("radius" + n, "radius", "m", positive(),
                                n.empty() ? "body 1 radius [m]" : "body 2 radius [m] (default: body 1's)"));

@@ -116,6 +116,11 @@ TEST(CliHardening, ElasticCollisionsDoNotCreateEnergy) {
   }
 }
 
+TEST(CliHardening, SurfaceEnergiesBeyondAnySolidAreRefused) {
+  // gamma = 1e300 overflowed BP04's W0 inside a warning's text (found by the CLI fuzzer).
+  expect_rejected(cmd("collide", ice, {"--A", "1e-6", "--velocity", "2", "--gamma=1e300", "--json"}), "--gamma", "1e300");
+}
+
 TEST(CliHardening, InfiniteRadiusIsNotAWall) {
   expect_rejected(cmd("collide", ice, {"--A", "1e-6", "--velocity", "1", "--radius2", "inf"}), "--radius2", "inf");
 }
