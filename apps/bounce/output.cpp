@@ -47,16 +47,23 @@ struct ToJson {
   }
 };
 
-void check_finite(const nlohmann::json& value, const std::string& path) {
+// `null_refused`: a saved table has no nulls, so one there is a non-finite number that
+// nlohmann wrote as null.
+void check_finite(const nlohmann::json& value, const std::string& path, bool null_refused = false) {
+  if (null_refused && value.is_null()) {
+    throw NumericalError(fmt::format("table value {} is not finite; refusing to print the table", path));
+  }
   if (value.is_number_float() && !std::isfinite(value.get<double>())) {
     throw NumericalError(fmt::format("result {} = {} is outside the range of double precision (inputs too extreme "
                                      "for this computation); refusing to print it",
                                      path.substr(path.find('.') + 1), value.get<double>()));
   }
   if (value.is_object()) {
-    for (const auto& [key, item] : value.items()) check_finite(item, path + "." + key);
+    for (const auto& [key, item] : value.items()) check_finite(item, path + "." + key, null_refused);
   } else if (value.is_array()) {
-    for (std::size_t i = 0; i < value.size(); ++i) check_finite(value[i], path + "[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      check_finite(value[i], path + "[" + std::to_string(i) + "]", null_refused);
+    }
   }
 }
 
@@ -99,17 +106,7 @@ void print_csv(const Table& table) {
 }
 
 void print_text(const std::string& text, const std::string& json) {
-  // nlohmann reads a non-finite double written by to_json as null: a null is a refusal too.
-  const nlohmann::json j = nlohmann::json::parse(json);
-  const std::function<void(const nlohmann::json&, const std::string&)> walk = [&](const nlohmann::json& v, const std::string& path) {
-    if (v.is_null()) throw NumericalError(fmt::format("table value {} is not finite; refusing to print the table", path));
-    if (v.is_object()) {
-      for (const auto& [key, item] : v.items()) walk(item, path + "." + key);
-    } else if (v.is_array()) {
-      for (std::size_t i = 0; i < v.size(); ++i) walk(v[i], fmt::format("{}[{}]", path, i));
-    }
-  };
-  walk(j, "table");
+  check_finite(nlohmann::json::parse(json), "table", true);
   std::cout << text;
 }
 
