@@ -18,7 +18,7 @@ PYTHON    := /usr/bin/python3
 CMAKE_FLAGS ?=
 ASAN_DIR  ?= build-asan
 FUZZ_SECONDS ?= 600
-FUZZ_TARGETS ?= materials table rules ranges cli
+FUZZ_TARGETS ?= materials table rules ranges cli fit_data
 # The sanitizer build's own packages (clang with its sanitizer and libFuzzer runtimes).
 SANITIZE_DEPS := clang libclang-rt-dev ccache
 # Every report ends the process with an error, leaks included (docs/hardening.md).

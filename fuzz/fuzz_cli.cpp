@@ -11,7 +11,8 @@
 // leaves the bytes to libFuzzer's own mutations. Crossovers cut at option boundaries.
 // Properties: the CLI's contract (fuzz/oracle.hpp, docs/hardening.md). Work is capped, not
 // judged: inputs with a range of more than 8 points (64 for `contact`) or more than 10000
-// trajectory samples are skipped, and so is --help beside other options.
+// trajectory samples are skipped, and so are `fit` (fuzz_fit_data reads its data) and --help
+// beside other options.
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -286,6 +287,9 @@ std::string substituted(std::string arg, const std::string& text_file) {
 // Work the harness does not wait for: long sweeps and trajectories; and --help among other
 // options (one static text: mutations and crossovers would spread it over the corpus).
 bool too_much_work(const std::vector<std::string>& args) {
+  // A fit integrates thousands of collisions (minutes under the sanitizers); its data reader
+  // has its own target (fuzz_fit_data) and its options the tests of tests/cpp/cli.
+  if (!args.empty() && args.front() == "fit") return true;
   const long max_points = !args.empty() && args.front() == "contact" ? 64 : 8;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];

@@ -214,10 +214,26 @@ std::function<int()> table(Options& o) {
   };
 }
 
+std::function<int()> fit(Options& o) {
+  const std::string* data = o.add_text("data", "CSV of the measured restitution curve (docs/fitting.md; - for standard input)", "FILE");
+  const bool* json = o.add_flag("json", "print JSON");
+  const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
+  return [&o, data, json, progress] {
+    if (!o.given("data")) throw InvalidArgument("data", "(not given)", "a CSV file of velocity,cor[,cor_error][,outcome]");
+    const std::string text = read_file("data", *data, "a readable CSV file (or - for standard input)");
+    const analysis::Experiment experiment = analysis::parse_experiment(text, *data == "-" ? "(standard input)" : *data);
+    Progress report("bounce fit", *progress);
+    const Record out = api::fit(o.inputs(), experiment, std::ref(report));
+    *json ? print_json(out) : print_text(out, fit_text(out));
+    return 0;
+  };
+}
+
 const std::map<std::string, Setup>& setups() {
   static const std::map<std::string, Setup> table = {
       {"materials", materials}, {"models", models},     {"contact", contact},   {"collide", collide}, {"curve", curve},
-      {"analytic", analytic},   {"sticking", sticking}, {"rules", rules},       {"table", ::bounce::cli::table}};
+      {"analytic", analytic},   {"sticking", sticking}, {"rules", rules},       {"table", ::bounce::cli::table},
+      {"fit", ::bounce::cli::fit}};
   return table;
 }
 

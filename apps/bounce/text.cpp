@@ -194,4 +194,52 @@ std::string table_value_text(const Record& r) {
   return fmt::format("cor {:.10g} ({}), table error <= {:g}\n", num(r, "cor"), str(r, "outcome"), num(r, "bound"));
 }
 
+namespace {
+
+std::string range_text(const Value& range) {
+  const auto& ends = range.list();
+  auto end = [](const Value& v, const char* open) { return v.is_null() ? std::string(open) : fmt::format("{:.4g}", v.number()); };
+  if (ends[0].is_null() && ends[1].is_null()) return "unconstrained on the grid";
+  if (ends[0].is_null()) return fmt::format("< {} (the grid's lower edge is inside)", end(ends[1], ""));
+  if (ends[1].is_null()) return fmt::format("> {} (a lower limit: the grid's upper edge is inside)", end(ends[0], ""));
+  return fmt::format("{} .. {}", end(ends[0], ""), end(ends[1], ""));
+}
+
+std::string fitted_lines(const Record& f, const char* best_key, const char* range_key) {
+  std::string s;
+  for (const Value& name : f.at("fitted").list()) {
+    const std::string& n = name.text();
+    s += fmt::format("  {:<8} = {:<12.6g} range {}\n", n, f.at(best_key).record().at(n).number(),
+                     range_text(f.at(range_key).record().at(n)));
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string fit_text(const Record& f) {
+  std::string s = fmt::format("model {} fitted to {} ({} points, {} collisions)\n", str(f, "model"), str(f, "data"),
+                              f.at("points").table().rows.size(), num(f, "collisions"));
+  s += fmt::format("chi2 (K13 (31), mean squared residual) = {:.6g}; ranges: chi2 <= 2 chi2_min (K13 §4.1)\n",
+                   num(f, "chi2"));
+  s += fitted_lines(f, "best", "ranges");
+  for (const auto& [key, value] : sorted(f.at("normalised").record())) s += fmt::format("  {} = {:.4g}\n", key, value.number());
+  if (f.contains("chi2_weighted")) {
+    s += fmt::format("proper chi2 = {:.6g}", num(f, "chi2_weighted"));
+    if (!f.at("reduced_chi2").is_null()) s += fmt::format(", reduced {:.4g}", num(f, "reduced_chi2"));
+    s += "; 1 sigma intervals (Delta chi2 = 1):\n" + fitted_lines(f, "best_weighted", "intervals");
+  }
+  s += fmt::format("AIC = {:.6g}, BIC = {:.6g} ({} parameters)\n", num(f, "aic"), num(f, "bic"), num(f, "parameters"));
+  if (f.contains("comparison")) {
+    s += "comparison (lowest AIC first is best):\n";
+    for (const Value& row : f.at("comparison").list()) {
+      const Record& c = row.record();
+      s += fmt::format("  {:<52} chi2 {:<11.4g} AIC {:<10.5g} BIC {:<10.5g}\n", str(c, "label"), num(c, "chi2"),
+                       num(c, "aic"), num(c, "bic"));
+    }
+  }
+  s += lines("warning", f.at("warnings"));
+  return s;
+}
+
 }  // namespace bounce::cli

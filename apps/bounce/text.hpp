@@ -13,6 +13,8 @@ std::string analytic_text(const Record& forms);
 std::string sticking_text(const Record& sticking, const std::string& model);
 std::string materials_text(const Value& materials);
 std::string table_value_text(const Record& value);
+/// `bounce fit`: best values with their ranges, chi^2, and the comparison when there is one.
+std::string fit_text(const Record& fit);
 /// `bounce models`: each model, what it is and its options.
 std::string models_text(const Value& registry);
 /// `bounce models --markdown`: the tables of docs/models.md.

@@ -108,6 +108,28 @@ CommandSpec analytic_command() {
   return c;
 }
 
+CommandSpec fit_command() {
+  CommandSpec c{"fit", "Fit a model to a measured restitution curve (K13 §4): best values, ranges, chi^2", true, true,
+                {text_parameter("fit", "parameters to fit, P1,P2,... (default: the model's; krijt: gamma,tvis,yield)",
+                                "P1,P2"),
+                 text_parameter("grid", "grids P=LO:HI:N,... in SI units, log-spaced (default: docs/fitting.md)",
+                                "P=LO:HI:N"),
+                 flag_parameter("compare", "also fit the comparison models and list chi^2, AIC and BIC (K13 Fig 6)"),
+                 with_default(real_parameter("threads", "threads", "", Range{0.0, 1024.0, true, true, false, true},
+                                             "worker threads (default 0: every core); the results do not depend on it"),
+                              0.0),
+                 with_default(real_parameter("precision", "relative precision", "", open_interval(1e-9, 0.1),
+                                             "relative precision of the refined parameters (default 1e-3)"),
+                              1e-3),
+                 flag_parameter("grid_only", "report the grid's minimum, without refining it"),
+                 flag_parameter("chi2_grid", "include the whole chi^2 grid (row-major, yield innermost)"),
+                 flag_parameter("timing", "include where the time went (grid collisions, e_P, chi^2, refinement)")}};
+  c.models = {"krijt", "jkr-viscoelastic", "adhesive-viscoelastic", "viscoelastic", "viscoelastic-shifted", "hertz"};
+  c.models_why = "a model with parameters to fit: " + fmt::format("{}", fmt::join(c.models, ", "));
+  c.unused = {{tangential_parameters(), "none with fit: the restitution data are of head-on collisions"}};
+  return c;
+}
+
 std::vector<CommandSpec> make_commands() {
   return {
       {"materials", "List the materials table (K13 table 2 and more)", false, false, {materials_file()}},
@@ -119,6 +141,7 @@ std::vector<CommandSpec> make_commands() {
       sticking_command(),
       {"rules", "Post-collision velocities and spins (BSHP96 (42)-(43)) of JSON encounters", true, true, {}},
       table_command(),
+      fit_command(),
   };
 }
 
@@ -249,7 +272,7 @@ Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
   const bool law = c.name == "contact";
   std::vector<ParameterSpec> group;  // the model's or the law's parameters
   if (c.takes_model) {
-    b.model = chosen(inputs, "model", "viscoelastic");
+    b.model = chosen(inputs, "model", c.models.empty() ? "viscoelastic" : c.models.front().c_str());
     group = models::model_registry().at(b.model).parameters;
     if (!takes_model(c, b.model)) throw InvalidArgument("model", b.model, c.models_why);
     for (const auto& [name, value] : inputs) {

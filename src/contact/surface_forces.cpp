@@ -64,10 +64,12 @@ ParameterSpec z0_parameter() {
   // sigma0 = gamma/z0 and Maugis' lambda far from underflow and overflow (z0 = 1e-150 m gave
   // an infinite Tabor parameter).
   const Range physical{1e-15, 1e-6, true, true, false};
-  return with_default(real_parameter("z0", "equilibrium separation z0", "m", physical,
-                                     "equilibrium separation z0 [m] of the surfaces: Tabor parameter K13 (11), "
-                                     "Maugis' lambda, krijt's sigma0 = gamma/z0 (default 2e-10)"),
-                      0.2e-9);
+  // `bounce fit` can fit it (K13 does not state its z0): 0.05-1 nm around atomic spacings.
+  return fittable(with_default(real_parameter("z0", "equilibrium separation z0", "m", physical,
+                                              "equilibrium separation z0 [m] of the surfaces: Tabor parameter K13 "
+                                              "(11), Maugis' lambda, krijt's sigma0 = gamma/z0 (default 2e-10)"),
+                               0.2e-9),
+                  {0.05e-9, 1e-9, 20, ""});
 }
 
 TaborSummary tabor_summary(double r, double e, double gamma, double z0) {

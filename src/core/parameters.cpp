@@ -83,6 +83,11 @@ ParameterSpec with_default(ParameterSpec spec, ParameterValue value) {
   return spec;
 }
 
+ParameterSpec fittable(ParameterSpec spec, FitGrid grid) {
+  spec.fit = std::move(grid);
+  return spec;
+}
+
 std::string value_text(const ParameterValue& value) {
   struct Text {
     std::string operator()(double x) const { return format_value(x); }

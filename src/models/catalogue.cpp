@@ -16,7 +16,10 @@ ParameterSpec real(std::string name, std::string quantity, std::string unit, Ran
 }  // namespace
 
 ParameterSpec dissipative_constant() {
-  return real("A", "dissipative constant A", "s", non_negative(), "dissipative constant A [s] (BP04 (8.38), BSHP96 (23))");
+  // From nanosecond relaxation in micrometre grains to BSHP96's centimetre ice (~1e-5 s).
+  return fittable(real("A", "dissipative constant A", "s", non_negative(),
+                       "dissipative constant A [s] (BP04 (8.38), BSHP96 (23))"),
+                  {1e-12, 1e-2, 60, ""});
 }
 ParameterSpec shear_viscosity() {
   return real("eta1", "shear viscosity eta1", "Pa s", non_negative(), "shear viscosity eta1 [Pa s] (A from BP04 (8.38))");
@@ -25,8 +28,10 @@ ParameterSpec bulk_viscosity() {
   return real("eta2", "bulk viscosity eta2", "Pa s", non_negative(), "bulk viscosity eta2 [Pa s] (A from BP04 (8.38))");
 }
 ParameterSpec relaxation_time() {
-  return real("tvis", "viscous relaxation time T_vis", "s", positive(),
-              "viscous relaxation time T_vis [s] (A = T_vis/nu^2 unless A is given, K13 after (18))");
+  // K13 Fig 8 (b): 1e-14 s to 1e-9 s, with a decade to spare on either side.
+  return fittable(real("tvis", "viscous relaxation time T_vis", "s", positive(),
+                       "viscous relaxation time T_vis [s] (A = T_vis/nu^2 unless A is given, K13 after (18))"),
+                  {1e-15, 1e-8, 60, ""});
 }
 ParameterSpec dissipative_constant_b() {
   return real("B", "dissipative constant B", "s", non_negative(),
@@ -38,8 +43,9 @@ ParameterSpec k() {
   // k < beta < 1/k only while k < 0.995 (k = 0.999 failed at the first step); below 1e-12
   // (moduli 1e12 apart) the snap-on contact is so small that both engines fail (3e-15 did).
   const Range tested{1e-12, 0.99, true, true, false};
-  return real("k", "k (relaxed / instantaneous modulus)", "", tested,
-              "relaxed / instantaneous modulus k of the crack law K13 (16) (default 0.02)", 0.02);
+  return fittable(real("k", "k (relaxed / instantaneous modulus)", "", tested,
+                       "relaxed / instantaneous modulus k of the crack law K13 (16) (default 0.02)", 0.02),
+                  {1e-3, 0.5, 30, ""});
 }
 ParameterSpec power_d1() {
   return real("power_d1", "power-law constant D1", "m^(1-alpha)/s^2", positive(), "power-law D1 [m^{1-alpha}/s^2]");

@@ -26,25 +26,26 @@ using namespace catalogue;
 std::vector<ModelRow> builtin_rows() {
   return {
       {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)",
-       Capabilities{.master_curve = true, .convex = true}, {}, &make_hertz},
+       Capabilities{.master_curve = true, .convex = true}, {}, &make_hertz, {"yield"}},
       {"viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'",
        "BP04 (8.42), BSHP96 (24)", Capabilities{.master_curve = true, .convex = true},
-       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic},
+       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic, {"A"}},
       {"viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero", "BSHP96 (25)",
        Capabilities{.convex = true},
-       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic_shifted},
+       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic_shifted,
+       {"A"}},
       {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", Capabilities{},
        {power_d1(), power_alpha(), power_d2(), power_beta(), power_gamma()}, &make_power_law},
       {"adhesive-viscoelastic", "BP04's quasi-static adhesive force (8.56) with its dissipation (8.57)",
        "BP04 (8.56)-(8.58), docs/adhesive.md", Capabilities{.adhesive = true},
        {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time(), dissipative_constant_b(), z0()},
-       &make_adhesive_viscoelastic},
+       &make_adhesive_viscoelastic, {"gamma", "tvis", "yield"}},
       {"jkr-viscoelastic", "contact radius on the JKR equilibrium (instantaneous crack) plus the bulk force",
        "K13 (8), (9), (19), (20)", Capabilities{.adhesive = true, .dynamic_contact = true},
-       {relaxation_time(), dissipative_constant(), z0()}, &make_jkr_viscoelastic},
+       {relaxation_time(), dissipative_constant(), z0()}, &make_jkr_viscoelastic, {"gamma", "tvis", "yield"}},
       {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
        "K13 (2), (14)-(21), appendices B, C", Capabilities{.adhesive = true, .dynamic_contact = true, .stiff = true},
-       {relaxation_time(), dissipative_constant(), z0(), k()}, &make_krijt},
+       {relaxation_time(), dissipative_constant(), z0(), k()}, &make_krijt, {"gamma", "tvis", "yield"}},
   };
 }
 
@@ -52,8 +53,10 @@ std::vector<ModelRow> builtin_rows() {
 std::vector<ParameterSpec> every_model() {
   return {
       choice_parameter("contact_end", {"overlap", "force"}, "overlap | force: when the contact ends (default overlap)"),
-      real_parameter("yield", "yield strength Y", "Pa", positive(),
-                     "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
+      // K13 Fig 7 finds Y / E_soft from 1e-3 to the theoretical 0.2; at 1 no collision yields.
+      fittable(real_parameter("yield", "yield strength Y", "Pa", positive(),
+                              "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
+               {1e-4, 1.0, 100, "E_soft"}),
       real_parameter("friction", "friction coefficient mu", "", non_negative(), "friction coefficient mu (BSHP96 (36))"),
       real_parameter("asperity", "asperity size zeta0", "m", positive(),
                      "asperity size zeta0 [m] (BSHP96 (32); asperity law)"),

@@ -26,8 +26,12 @@ void add_body(std::vector<ParameterSpec>& out, const std::string& n) {
   // At most 1e3 J/m^2: solids lie below ~10 (K13 table 2: 0.014-1.6); 1e300 overflowed the
   // adhesion work W0 of BP04 (8.95) in a warning (found by the CLI fuzzer).
   const Range surface_energy{0.0, 1e3, true, true, false};
-  out.push_back(real_parameter("gamma" + n, "surface energy gamma", "J/m^2", surface_energy,
-                               which + " surface energy (work of adhesion) [J/m^2]" + note));
+  ParameterSpec gamma = real_parameter("gamma" + n, "surface energy gamma", "J/m^2", surface_energy,
+                                       which + " surface energy (work of adhesion) [J/m^2]" + note);
+  // `bounce fit` fits the pair's gamma (both bodies get the trial value): K13 Fig 7 (a)
+  // finds gamma / gamma_L from about 0.3 to 30.
+  if (n.empty()) gamma = fittable(std::move(gamma), {0.1, 100.0, 60, "gamma_L"});
+  out.push_back(std::move(gamma));
   out.push_back(real_parameter("radius" + n, "radius", "m", positive(),
                                n.empty() ? "body 1 radius [m]" : "body 2 radius [m] (default: body 1's)"));
   // Mass inside a ball of radius R has J <= m R^2 about any axis through its centre.

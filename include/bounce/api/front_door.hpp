@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bounce/analysis/collide.hpp"
+#include "bounce/analysis/fit.hpp"
 #include "bounce/analysis/tables.hpp"
 #include "bounce/core/parameters.hpp"
 #include "bounce/core/record.hpp"
@@ -102,6 +103,11 @@ Value rules(const Inputs& inputs, std::string_view encounters);
 std::variant<analysis::NormalTable, analysis::TangentialTable> table(const Inputs& inputs, const Progress& progress = {});
 /// The value of a saved JSON table at velocity (and tangential_velocity for eps^T).
 Record table_value(std::string_view json, const Inputs& inputs);
+/// The model fitted to one measured restitution curve (K13 §4, docs/fitting.md): best values,
+/// factor-2 ranges, chi^2 (31), profiles, the data with the model's e; Delta chi^2 = 1
+/// intervals when every point has an error; with `compare`, the comparison models too.
+Record fit(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress = {});
+
 /// The materials table (built-in, or materials_file).
 Value materials(const Inputs& inputs);
 /// The model registry and the contact laws, with every parameter.

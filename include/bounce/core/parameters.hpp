@@ -53,6 +53,17 @@ Range positive();
 Range non_negative();
 Range open_interval(double lo, double hi);
 
+/// How a parameter that can be fitted is gridded by default (analysis/fit.hpp): `points`
+/// values spaced geometrically from lo to hi, in units of `scale`: "" for the SI unit,
+/// "gamma_L" for the pair's surface energy from its materials, "E_soft" for the smaller
+/// Young's modulus of the two bodies (the normalisations of K13 Fig 7).
+struct FitGrid {
+  double lo = 0.0;
+  double hi = 0.0;
+  std::size_t points = 0;
+  std::string scale;
+};
+
 struct ParameterSpec {
   std::string name;      ///< "A", "contact_end", "power_d1" (the CLI option without dashes)
   ParameterKind kind = ParameterKind::real;
@@ -64,6 +75,7 @@ struct ParameterSpec {
   std::size_t count = 1;             ///< reals: how many numbers
   std::optional<ParameterValue> default_value;  ///< used when not given; none: optional or required
   std::string placeholder;  ///< how a value looks, for --help ("LO:HI:N", "FILE"); derived when empty
+  std::optional<FitGrid> fit;  ///< a continuous physical parameter that `bounce fit` can fit, and its default grid
 
   /// "dissipative constant A [s]": the quantity and its unit, for messages.
   std::string what() const;
@@ -78,6 +90,7 @@ ParameterSpec choice_parameter(std::string name, std::vector<std::string> choice
 ParameterSpec text_parameter(std::string name, std::string help, std::string placeholder);
 ParameterSpec flag_parameter(std::string name, std::string help);
 ParameterSpec with_default(ParameterSpec spec, ParameterValue value);
+ParameterSpec fittable(ParameterSpec spec, FitGrid grid);
 
 /// Text of a value as the user would type it ("1e-06", "force", "0.001,0.005", "true").
 std::string value_text(const ParameterValue& value);

@@ -36,6 +36,9 @@ struct ModelRow {
   Capabilities capabilities;
   std::vector<ParameterSpec> parameters;  ///< the model's own, then (after add) the shared ones
   ModelFactory factory;
+  /// What `bounce fit` fits by default (parameters with a fit grid: the model's, the shared
+  /// yield, the pair's gamma); empty: the user names them.
+  std::vector<std::string> fit = {};
 };
 
 class ModelRegistry {

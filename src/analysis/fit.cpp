@@ -1,0 +1,346 @@
+// K13 §4.1: chi^2 (31) on a grid of parameter values, the profiles and factor-2 ranges, then
+// the refinement (fit_refine.cpp). docs/fitting.md.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <numeric>
+
+#include <fmt/format.h>
+
+#include "bounce/analytic/adhesive.hpp"
+#include "bounce/core/error.hpp"
+#include "fit_internal.hpp"
+#include "parallel.hpp"
+
+namespace bounce::analysis {
+
+namespace detail {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+long long nanoseconds_since(Clock::time_point start) {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+}
+}  // namespace
+
+PlasticScales plastic_scales(const Pair& pair) {
+  return {pair.effective_radius(), pair.effective_mass(), pair.effective_modulus()};
+}
+
+Evaluator::Evaluator(const FitProblem& problem) : problem_(problem) {
+  for (const Measurement& m : problem.data.points) speeds_.push_back(m.velocity);
+  std::sort(speeds_.begin(), speeds_.end());
+  speeds_.erase(std::unique(speeds_.begin(), speeds_.end()), speeds_.end());
+  for (const Measurement& m : problem.data.points) {
+    speed_of_point_.push_back(
+        static_cast<std::size_t>(std::lower_bound(speeds_.begin(), speeds_.end(), m.velocity) - speeds_.begin()));
+  }
+}
+
+std::optional<std::vector<double>> Evaluator::adhesive(std::span<const double> values, unsigned threads,
+                                                       PlasticScales& scales, std::string& failure) const {
+  const FitCase c = problem_.case_at(values);
+  scales = plastic_scales(c.pair);
+  std::vector<double> e_a(speeds_.size(), 0.0);
+  std::vector<std::string> failures(speeds_.size());
+  parallel_for(speeds_.size(), threads, [&](std::size_t u, unsigned) {
+    const auto start = Clock::now();
+    try {
+      e_a[u] = analysis::cor(c.pair, c.model, speeds_[u], c.options);
+    } catch (const NumericalError& e) {
+      failures[u] = e.what();
+    }
+    collision_nanoseconds_ += nanoseconds_since(start);
+    ++collisions_;
+  });
+  for (const std::string& f : failures) {
+    if (!f.empty()) {
+      failure = f;
+      return std::nullopt;
+    }
+  }
+  return e_a;
+}
+
+std::vector<double> Evaluator::plastic_cors(const PlasticScales& s, std::optional<double> yield) const {
+  std::vector<double> e_p(speeds_.size(), 1.0);
+  if (!yield) return e_p;
+  const double v_y = analytic::yield_velocity(s.radius, s.mass, s.modulus, *yield);  // K13 (28)
+  for (std::size_t u = 0; u < speeds_.size(); ++u) e_p[u] = analytic::cor_thornton_ning(speeds_[u], v_y);  // (29)
+  return e_p;
+}
+
+void Evaluator::combine(std::span<const double> e_a, std::span<const double> e_p, std::span<double> out) const {
+  for (std::size_t n = 0; n < out.size(); ++n) {
+    const std::size_t u = speed_of_point_[n];
+    out[n] = combine_plastic(e_a[u], e_p[u]);
+  }
+}
+
+void Evaluator::model_cor(const PlasticScales& scales, std::span<const double> e_a, std::optional<double> yield,
+                          std::span<double> out) const {
+  combine(e_a, plastic_cors(scales, yield), out);
+}
+
+double Evaluator::objective(std::span<const double> cor, bool weighted) const {
+  return weighted ? weighted_chi2(problem_.data, cor) : mean_squared_residual(problem_.data, cor);
+}
+
+}  // namespace detail
+
+double combine_plastic(double cor_adhesive, double cor_plastic) {
+  // Below the yield velocity e_P = 1 and (30) is e_A itself (as analysis::collide has it).
+  if (cor_plastic >= 1.0 || cor_adhesive == 0.0) return cor_adhesive;
+  return analytic::cor_with_plastic(cor_adhesive, cor_plastic);  // K13 (30)
+}
+
+double cor_with_yield(const Pair& pair, double velocity, double cor_adhesive, std::optional<double> yield) {
+  if (!yield) return cor_adhesive;
+  const double v_y = analytic::yield_velocity(pair.effective_radius(), pair.effective_mass(),
+                                              pair.effective_modulus(), *yield);  // K13 (28)
+  return combine_plastic(cor_adhesive, analytic::cor_thornton_ning(velocity, v_y));  // (29), (30)
+}
+
+ParameterRange profile_range(const Profile& profile, double best_value, double best_chi2, double threshold) {
+  struct Sample {
+    double value, chi2;
+  };
+  std::vector<Sample> s;
+  for (std::size_t j = 0; j < profile.values.size(); ++j) s.push_back({profile.values[j], profile.chi2[j]});
+  const auto at = std::lower_bound(s.begin(), s.end(), best_value, [](const Sample& a, double v) { return a.value < v; });
+  std::size_t k = static_cast<std::size_t>(at - s.begin());
+  if (at != s.end() && at->value == best_value) {
+    at->chi2 = std::min(at->chi2, best_chi2);
+  } else {
+    s.insert(at, {best_value, best_chi2});
+  }
+  // Linear in log(value) between the last sample inside and the first outside.
+  auto crossing = [&](const Sample& in, const Sample& out) {
+    const double t = std::isfinite(out.chi2) ? (threshold - in.chi2) / (out.chi2 - in.chi2) : 0.0;
+    return std::exp(std::log(in.value) + std::clamp(t, 0.0, 1.0) * (std::log(out.value) - std::log(in.value)));
+  };
+  ParameterRange r;
+  std::size_t lo = k, hi = k;
+  while (lo > 0 && s[lo - 1].chi2 <= threshold) --lo;
+  while (hi + 1 < s.size() && s[hi + 1].chi2 <= threshold) ++hi;
+  if (lo > 0) r.lo = crossing(s[lo], s[lo - 1]);
+  if (hi + 1 < s.size()) r.hi = crossing(s[hi], s[hi + 1]);
+  return r;
+}
+
+namespace {
+
+using detail::Evaluator;
+using detail::PlasticScales;
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// The collision axes' values at flat index i (row-major: the last axis fastest).
+std::vector<double> values_at(const std::vector<FitAxis>& axes, std::size_t i) {
+  std::vector<double> v(axes.size());
+  for (std::size_t a = axes.size(); a-- > 0;) {
+    v[a] = axes[a].values[i % axes[a].values.size()];
+    i /= axes[a].values.size();
+  }
+  return v;
+}
+
+std::size_t product(const std::vector<FitAxis>& axes) {
+  std::size_t n = 1;
+  for (const FitAxis& a : axes) n *= a.values.size();
+  return n;
+}
+
+void check_problem(const FitProblem& p) {
+  if (p.data.points.empty()) throw InvalidArgument("data", "(no data)", "at least one measurement");
+  if (p.collision_axes.empty() && !p.yield_axis) throw InvalidArgument("fit", "(nothing)", "at least one parameter to fit");
+  std::vector<FitAxis> all = p.collision_axes;
+  if (p.yield_axis) all.push_back(*p.yield_axis);
+  for (const FitAxis& a : all) {
+    if (a.values.empty()) throw InvalidArgument("grid", a.name, "at least one value per fitted parameter");
+    for (std::size_t j = 0; j < a.values.size(); ++j) {
+      if (!(a.values[j] > 0.0) || !std::isfinite(a.values[j]) || (j > 0 && !(a.values[j] > a.values[j - 1]))) {
+        throw InvalidArgument("grid", a.name, "increasing values > 0 and finite");
+      }
+    }
+  }
+  if (!(p.precision > 0.0 && p.precision < 1.0)) {
+    throw InvalidArgument("precision", fmt::format("{}", p.precision), "0 < precision < 1");
+  }
+}
+
+// The grid's e_A (per collision point and distinct speed) and the chi^2 of every grid point.
+struct GridValues {
+  std::vector<std::vector<double>> e_a;  // empty where the collisions failed
+  std::vector<PlasticScales> scales;
+  std::vector<double> chi2, weighted;     // per (collision point, yield), +inf where failed
+  std::size_t failed = 0;
+  std::string first_failure;
+};
+
+void integrate_grid(const FitProblem& p, const Evaluator& ev, GridValues& g) {
+  const std::size_t n = product(p.collision_axes);
+  g.e_a.assign(n, {});
+  g.scales.assign(n, {});
+  std::vector<std::string> failures(n);
+  std::mutex progress_mutex;
+  std::size_t done = 0;
+  const std::size_t total = n * ev.speeds().size();
+  detail::parallel_for(n, p.threads, [&](std::size_t i, unsigned) {
+    const std::vector<double> values = values_at(p.collision_axes, i);
+    std::string failure;
+    if (auto e = ev.adhesive(values, 1, g.scales[i], failure)) {
+      g.e_a[i] = std::move(*e);
+    } else {
+      failures[i] = failure.empty() ? "a collision failed" : failure;
+    }
+    if (p.progress) {
+      const std::lock_guard lock(progress_mutex);
+      done += ev.speeds().size();
+      p.progress(done, total);
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i) {
+    if (failures[i].empty()) continue;
+    if (g.failed++ == 0) g.first_failure = failures[i];
+  }
+}
+
+// chi^2 at every (collision point, yield value). e_P depends on the pair's scales, the yield
+// strength and the speed only: one table for the grid when every point has the same pair
+// (fitting gamma, T_vis, A, z0 or k), else computed per point.
+void grid_chi2(const FitProblem& p, const Evaluator& ev, GridValues& g, FitResult& r) {
+  using Clock = std::chrono::steady_clock;
+  const std::size_t n = g.e_a.size(), ny = p.yield_axis ? p.yield_axis->values.size() : 1;
+  const bool weighted = p.data.has_errors();
+  auto yield_at = [&](std::size_t y) { return p.yield_axis ? std::optional(p.yield_axis->values[y]) : std::nullopt; };
+  const auto first = std::find_if(g.e_a.begin(), g.e_a.end(), [](const auto& e) { return !e.empty(); });
+  const PlasticScales common = g.scales[static_cast<std::size_t>(first - g.e_a.begin())];
+  const bool shared = std::all_of(g.scales.begin(), g.scales.end(), [&](const PlasticScales& s) { return s == common; });
+  auto start = Clock::now();
+  std::vector<std::vector<double>> e_p(ny);
+  if (shared) {
+    for (std::size_t y = 0; y < ny; ++y) e_p[y] = ev.plastic_cors(common, yield_at(y));
+  }
+  r.plastic_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  start = Clock::now();
+  g.chi2.assign(n * ny, inf);
+  if (weighted) g.weighted.assign(n * ny, inf);
+  detail::parallel_for(n, p.threads, [&](std::size_t i, unsigned) {
+    if (g.e_a[i].empty()) return;
+    std::vector<double> cor(p.data.points.size());
+    for (std::size_t y = 0; y < ny; ++y) {
+      ev.combine(g.e_a[i], shared ? e_p[y] : ev.plastic_cors(g.scales[i], yield_at(y)), cor);
+      g.chi2[i * ny + y] = ev.objective(cor, false);
+      if (weighted) g.weighted[i * ny + y] = ev.objective(cor, true);
+    }
+  });
+  r.chi2_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Profiles of a chi^2 grid: per axis (collision axes, then yield), the minimum over the others.
+std::vector<Profile> profiles(const FitProblem& p, const std::vector<double>& chi2) {
+  std::vector<FitAxis> axes = p.collision_axes;
+  if (p.yield_axis) axes.push_back(*p.yield_axis);
+  std::vector<Profile> out;
+  for (const FitAxis& a : axes) out.push_back({a.values, std::vector<double>(a.values.size(), inf)});
+  for (std::size_t flat = 0; flat < chi2.size(); ++flat) {
+    std::size_t rest = flat;
+    for (std::size_t a = axes.size(); a-- > 0;) {
+      const std::size_t j = rest % axes[a].values.size();
+      rest /= axes[a].values.size();
+      out[a].chi2[j] = std::min(out[a].chi2[j], chi2[flat]);
+    }
+  }
+  return out;
+}
+
+// The grid point with the least chi^2 (the first of equals: deterministic).
+FitMinimum grid_minimum(const FitProblem& p, const std::vector<double>& chi2) {
+  const std::size_t ny = p.yield_axis ? p.yield_axis->values.size() : 1;
+  const auto best = static_cast<std::size_t>(std::min_element(chi2.begin(), chi2.end()) - chi2.begin());
+  FitMinimum m;
+  m.values = values_at(p.collision_axes, best / ny);
+  if (p.yield_axis) m.values.push_back(p.yield_axis->values[best % ny]);
+  m.chi2 = chi2[best];
+  return m;
+}
+
+std::vector<ParameterRange> ranges(const std::vector<Profile>& prof, const FitMinimum& best, double threshold) {
+  std::vector<ParameterRange> out;
+  for (std::size_t a = 0; a < prof.size(); ++a) out.push_back(profile_range(prof[a], best.values[a], best.chi2, threshold));
+  return out;
+}
+
+void warn_about_edges(FitResult& r, const FitMinimum& best, const std::vector<Profile>& prof) {
+  for (std::size_t a = 0; a < prof.size(); ++a) {
+    const auto& v = prof[a].values;
+    if (v.size() > 1 && (best.values[a] <= v.front() || best.values[a] >= v.back())) {
+      r.warnings.push_back(fmt::format("the best {} lies on the edge of its grid ({:.4g} .. {:.4g}): a limit, not a "
+                                       "value; widen the grid to locate it",
+                                       r.names[a], v.front(), v.back()));
+    }
+  }
+}
+
+}  // namespace
+
+FitResult fit(const FitProblem& p) {
+  check_problem(p);
+  const Evaluator ev(p);
+  FitResult r;
+  for (const FitAxis& a : p.collision_axes) r.names.push_back(a.name);
+  if (p.yield_axis) r.names.push_back(p.yield_axis->name);
+  for (const FitAxis& a : p.collision_axes) r.grid_shape.push_back(a.values.size());
+  if (p.yield_axis) r.grid_shape.push_back(p.yield_axis->values.size());
+
+  GridValues g;
+  const auto grid_start = std::chrono::steady_clock::now();
+  integrate_grid(p, ev, g);
+  r.collision_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - grid_start).count();
+  r.collision_cpu_seconds = ev.collision_seconds();
+  r.grid_collisions = ev.collisions();
+  r.failed_trials = g.failed;
+  if (g.failed == g.e_a.size()) {
+    throw NumericalError(fmt::format("no trial of the grid could be evaluated; the first failure: {}", g.first_failure));
+  }
+  if (g.failed > 0) {
+    r.warnings.push_back(fmt::format("{} of {} grid points failed and count as chi^2 = inf; the first: {}", g.failed,
+                                     g.e_a.size(), g.first_failure));
+  }
+  grid_chi2(p, ev, g, r);
+  r.profiles = profiles(p, g.chi2);
+  r.grid_best = grid_minimum(p, g.chi2);
+
+  const auto refine_start = std::chrono::steady_clock::now();
+  r.best = p.refine ? detail::refine(ev, r.grid_best, false, r.cor) : r.grid_best;
+  if (!p.refine || r.cor.empty()) {
+    PlasticScales scales;
+    std::string failure;
+    const auto e_a = ev.adhesive(std::span(r.best.values).first(p.collision_axes.size()), p.threads, scales, failure);
+    if (!e_a) throw NumericalError("the collisions at the best grid point failed: " + failure);
+    r.cor.assign(p.data.points.size(), 0.0);
+    ev.model_cor(scales, *e_a, p.yield_axis ? std::optional(r.best.values.back()) : std::nullopt, r.cor);
+  }
+  r.ranges = ranges(r.profiles, r.best, 2.0 * r.best.chi2);  // K13 §4.1: within a factor 2
+  if (p.data.has_errors()) {
+    r.weighted_profiles = profiles(p, g.weighted);
+    const FitMinimum start = grid_minimum(p, g.weighted);
+    std::vector<double> unused;
+    r.weighted_best = p.refine ? detail::refine(ev, start, true, unused) : start;
+    r.intervals = ranges(r.weighted_profiles, *r.weighted_best, r.weighted_best->chi2 + 1.0);  // Delta chi^2 = 1
+  }
+  r.refine_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - refine_start).count();
+  r.collisions = ev.collisions();
+  if (p.keep_grid) r.chi2_grid = std::move(g.chi2);
+  warn_about_edges(r, r.best, r.profiles);
+  if (p.data.points.size() <= r.names.size()) {
+    r.warnings.push_back(fmt::format("{} measurements for {} parameters: the fit is not constrained",
+                                     p.data.points.size(), r.names.size()));
+  }
+  return r;
+}
+
+}  // namespace bounce::analysis

@@ -1,0 +1,68 @@
+#pragma once
+// Private: what the grid (fit.cpp) and the refinement (fit_refine.cpp) share.
+
+#include <atomic>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "bounce/analysis/fit.hpp"
+
+namespace bounce::analysis {
+/// K13 (30) from e_A and e_P: e_A where e_P = 1 (below the yield velocity) or e_A = 0.
+double combine_plastic(double cor_adhesive, double cor_plastic);
+}  // namespace bounce::analysis
+
+namespace bounce::analysis::detail {
+
+/// The pair's scales that fix the yield velocity K13 (28).
+struct PlasticScales {
+  double radius = 0.0, mass = 0.0, modulus = 0.0;  ///< R_eff [m], m_eff [kg], E* [Pa]
+  bool operator==(const PlasticScales&) const = default;
+};
+PlasticScales plastic_scales(const Pair& pair);
+
+/// e_A at the data's speeds (each distinct speed integrated once) and e of K13 (30) from it.
+class Evaluator {
+ public:
+  explicit Evaluator(const FitProblem& problem);
+
+  const FitProblem& problem() const { return problem_; }
+  const std::vector<double>& speeds() const { return speeds_; }
+
+  /// e_A at every distinct speed for the collision values (several threads over the speeds);
+  /// none when a collision fails (NumericalError), its message in `failure`.
+  std::optional<std::vector<double>> adhesive(std::span<const double> values, unsigned threads, PlasticScales& scales,
+                                              std::string& failure) const;
+  /// e_P of K13 (28)-(29) at every distinct speed (1 without a yield strength).
+  std::vector<double> plastic_cors(const PlasticScales& scales, std::optional<double> yield) const;
+  /// e of K13 (30) at each data point from e_A and e_P at the distinct speeds.
+  void combine(std::span<const double> e_a, std::span<const double> e_p, std::span<double> out) const;
+  /// Both: e at each data point for the yield strength.
+  void model_cor(const PlasticScales& scales, std::span<const double> e_a, std::optional<double> yield,
+                 std::span<double> out) const;
+  /// K13 (31) or, weighted, the proper chi^2 of model values.
+  double objective(std::span<const double> cor, bool weighted) const;
+
+  /// Collisions integrated so far.
+  std::size_t collisions() const { return collisions_; }
+  double collision_seconds() const { return static_cast<double>(collision_nanoseconds_.load()) * 1e-9; }
+
+ private:
+  const FitProblem& problem_;
+  std::vector<double> speeds_;
+  std::vector<std::size_t> speed_of_point_;
+  mutable std::atomic<std::size_t> collisions_{0};
+  mutable std::atomic<long long> collision_nanoseconds_{0};
+};
+
+/// The best yield strength (and its chi^2) for given e_A: the axis's grid, then Brent's
+/// method in log Y around the best grid value.
+FitMinimum best_yield(const Evaluator& evaluator, const PlasticScales& scales, std::span<const double> e_a,
+                      const FitAxis& yield, bool weighted);
+
+/// A start of the refinement: collision values (the yield's comes from best_yield).
+FitMinimum refine(const Evaluator& evaluator, const FitMinimum& start, bool weighted, std::vector<double>& cor_at_best);
+
+}  // namespace bounce::analysis::detail

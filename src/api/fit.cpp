@@ -1,0 +1,429 @@
+// The front door's fit (docs/fitting.md): what to fit and on which grid, each trial's pair and
+// model built by the same binding as every other command, and the Record of the result.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "binding.hpp"
+#include "bounce/analytic/adhesive.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+#include "bounce/models/registry.hpp"
+#include "bounce/pair/pair_parameters.hpp"
+
+namespace bounce::api {
+
+namespace {
+
+// The fits' default for the K13 engines' tolerance: e to ~1e-6 (measured against 1e-10 on
+// K13's PSL-quartz pair, docs/fitting.md), four times faster than the collide default 1e-8.
+constexpr double fit_adhesive_tolerance = 1e-5;
+
+// The parameters that can be fitted with `model`: its own and the shared ones with a fit
+// grid, and the pair's gamma for an adhesive model (the others do not use it).
+std::vector<ParameterSpec> fittable_parameters(const std::string& model) {
+  std::vector<ParameterSpec> out;
+  const auto& row = models::model_registry().at(model);
+  for (const ParameterSpec& s : pair_parameters()) {
+    if (s.fit && row.capabilities.adhesive) out.push_back(s);
+  }
+  for (const ParameterSpec& s : row.parameters) {
+    if (s.fit) out.push_back(s);
+  }
+  return out;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto at = text.find(separator, start);
+    out.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
+    if (at == std::string::npos) return out;
+    start = at + 1;
+  }
+}
+
+struct Plan {
+  std::string model;
+  std::vector<ParameterSpec> fitted;  // collision parameters first, yield last
+  std::vector<analysis::FitAxis> axes;
+  Inputs fixed;   // the user's inputs without the fit command's own
+  std::optional<Pair> pair;  // the pair as given (gamma_L, E_soft, the speeds it takes)
+  std::optional<double> gamma_l;
+  double e_soft = 0.0;
+};
+
+std::vector<ParameterSpec> chosen_parameters(const std::string& model, const std::string& text) {
+  const auto offered = fittable_parameters(model);
+  std::vector<std::string> names;
+  for (const auto& s : offered) names.push_back(s.name);
+  const std::vector<std::string> wanted =
+      text.empty() ? models::model_registry().at(model).fit : split(text, ',');
+  if (wanted.empty()) {
+    throw InvalidArgument("fit", "(not given)",
+                          fmt::format("the parameters to fit with model {}: some of {}", model, fmt::join(names, ", ")));
+  }
+  std::vector<ParameterSpec> out;
+  for (const std::string& w : wanted) {
+    const auto it = std::find_if(offered.begin(), offered.end(), [&](const ParameterSpec& s) { return s.name == w; });
+    if (it == offered.end()) {
+      throw InvalidArgument("fit", text.empty() ? w : text,
+                            fmt::format("parameters that model {} can fit: some of {}", model, fmt::join(names, ", ")));
+    }
+    if (std::any_of(out.begin(), out.end(), [&](const ParameterSpec& s) { return s.name == w; })) {
+      throw InvalidArgument("fit", text, "each parameter once");
+    }
+    out.push_back(*it);
+  }
+  std::stable_partition(out.begin(), out.end(), [](const ParameterSpec& s) { return s.name != "yield"; });
+  return out;
+}
+
+// "P=LO:HI:N,..." (SI units, log-spaced) over the defaults of the registry.
+std::map<std::string, std::vector<double>> given_grids(const std::string& text, const std::vector<ParameterSpec>& fitted) {
+  std::map<std::string, std::vector<double>> out;
+  if (text.empty()) return out;
+  for (const std::string& item : split(text, ',')) {
+    const auto eq = item.find('=');
+    const std::string name = item.substr(0, eq);
+    const auto spec = std::find_if(fitted.begin(), fitted.end(), [&](const ParameterSpec& s) { return s.name == name; });
+    if (eq == std::string::npos || spec == fitted.end()) {
+      throw InvalidArgument("grid", item, "P=LO:HI:N for a fitted parameter P, items separated by commas");
+    }
+    if (out.count(name)) throw InvalidArgument("grid", item, "one grid per parameter");
+    std::vector<double> v;
+    try {
+      v = detail::parse_range("grid", item.substr(eq + 1), true);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("grid", item, e.allowed());
+    }
+    if (v.size() > 100'000) throw InvalidArgument("grid", item, "at most 100000 values per parameter");
+    if (v.size() > 1 && !(v.back() > v.front())) throw InvalidArgument("grid", item, "LO < HI (or N = 1 for a fixed value)");
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    for (double x : v) {
+      if (!spec->range.contains(x)) throw InvalidArgument("grid", item, spec->range.describe(spec->what()));
+    }
+    out.emplace(name, std::move(v));
+  }
+  return out;
+}
+
+double scale_of(const Plan& plan, const ParameterSpec& s) {
+  const std::string& scale = s.fit->scale;
+  if (scale.empty()) return 1.0;
+  if (scale == "E_soft") return plan.e_soft;
+  if (scale == "gamma_L") {
+    if (!plan.gamma_l) {
+      throw InvalidArgument("grid", s.name,
+                            fmt::format("a grid {0}=LO:HI:N [J/m^2]: the materials have no surface energy to scale "
+                                        "the default grid by",
+                                        s.name));
+    }
+    return *plan.gamma_l;
+  }
+  throw std::logic_error("unknown fit scale " + scale);
+}
+
+std::vector<double> default_grid(const Plan& plan, const ParameterSpec& s) {
+  const double k = scale_of(plan, s);
+  const double lo = s.fit->lo * k, hi = s.fit->hi * k;
+  std::vector<double> v(s.fit->points);
+  for (std::size_t j = 0; j < v.size(); ++j) {
+    const double f = v.size() == 1 ? 0.0 : static_cast<double>(j) / static_cast<double>(v.size() - 1);
+    v[j] = std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo)));
+  }
+  // The declared range may be narrower than a scaled default (gamma <= 1e3 J/m^2).
+  std::erase_if(v, [&](double x) { return !s.range.contains(x); });
+  return v;
+}
+
+// A trial's inputs: the fixed ones with the fitted values set (gamma: both bodies').
+Inputs trial_inputs(const Plan& plan, std::span<const double> values) {
+  Inputs in = plan.fixed;
+  for (std::size_t a = 0; a < values.size(); ++a) {
+    const std::string& name = plan.fitted[a].name;
+    in[name] = values[a];
+    if (name == "gamma") in["gamma2"] = values[a];
+  }
+  return in;
+}
+
+Plan make_plan(const detail::Bound& bound, const Inputs& inputs, const std::string& model) {
+  Plan plan;
+  plan.model = model;
+  plan.fitted = chosen_parameters(model, bound.own.text("fit"));
+  for (const auto& [name, value] : inputs) {
+    if (!bound.own.spec(name)) plan.fixed.emplace(name, value);
+  }
+  for (const ParameterSpec& s : plan.fitted) {
+    for (const std::string& given : {s.name, s.name == "gamma" ? std::string("gamma2") : std::string()}) {
+      if (auto it = plan.fixed.find(given); !given.empty() && it != plan.fixed.end()) {
+        throw InvalidArgument(given, value_text(it->second),
+                              fmt::format("no fixed value: {} is fitted (drop it from --fit to hold it fixed)", s.name));
+      }
+    }
+  }
+  if (!plan.fixed.count("adhesive_tolerance") && models::model_registry().at(model).capabilities.dynamic_contact) {
+    plan.fixed["adhesive_tolerance"] = fit_adhesive_tolerance;
+  }
+  const Pair& pair = plan.pair.emplace(bounce::make_pair(bound.pair));
+  plan.gamma_l = pair.surface_energy();
+  const double e1 = pair.body1().material.youngs_modulus, e2 = pair.body2().material.youngs_modulus;
+  plan.e_soft = pair.body2().rigid ? e1 : std::min(e1, e2);
+  const auto grids = given_grids(bound.own.text("grid"), plan.fitted);
+  for (const ParameterSpec& s : plan.fitted) {
+    const auto it = grids.find(s.name);
+    plan.axes.push_back({s.name, it != grids.end() ? it->second : default_grid(plan, s)});
+  }
+  return plan;
+}
+
+Table profile_table(const analysis::Profile& p) {
+  Table t;
+  t.columns = {"value", "chi2"};
+  for (std::size_t j = 0; j < p.values.size(); ++j) {
+    t.rows.push_back({p.values[j], std::isfinite(p.chi2[j]) ? Value(p.chi2[j]) : Value()});
+  }
+  return t;
+}
+
+Record values_record(const std::vector<std::string>& names, const std::vector<double>& values) {
+  Record r;
+  for (std::size_t a = 0; a < names.size(); ++a) r.set(names[a], values[a]);
+  return r;
+}
+
+Record ranges_record(const std::vector<std::string>& names, const std::vector<analysis::ParameterRange>& ranges) {
+  Record r;
+  for (std::size_t a = 0; a < names.size(); ++a) {
+    Value::List ends{ranges[a].lo ? Value(*ranges[a].lo) : Value(), ranges[a].hi ? Value(*ranges[a].hi) : Value()};
+    r.set(names[a], Value(std::move(ends)));
+  }
+  return r;
+}
+
+Table points_table(const analysis::Experiment& data, const std::vector<double>& model_cor) {
+  Table t;
+  t.columns = {"line", "velocity", "cor", "cor_error", "outcome", "model_cor", "residual"};
+  for (std::size_t n = 0; n < data.points.size(); ++n) {
+    const auto& m = data.points[n];
+    t.rows.push_back({m.line, m.velocity, m.cor, m.cor_error ? Value(*m.cor_error) : Value(), m.stuck ? "stick" : "bounce",
+                      model_cor[n], m.cor - model_cor[n]});
+  }
+  return t;
+}
+
+// AIC and BIC of a least-squares fit: Gaussian errors of unknown sigma (N ln(RSS/N)) or,
+// with errors given, the proper chi^2.
+void add_information_criteria(Record& r, std::size_t n, std::size_t k, double fit_term) {
+  const double nn = static_cast<double>(n), kk = static_cast<double>(k);
+  r.set("parameters", k);
+  r.set("aic", fit_term + 2.0 * kk);
+  r.set("bic", fit_term + kk * std::log(nn));
+}
+
+Record fit_record(const Plan& plan, const analysis::Experiment& data, const analysis::FitResult& f, bool timing) {
+  Record r;
+  r.set("model", plan.model);
+  r.set("data", data.source);
+  r.set("fitted", f.names);
+  r.set("best", values_record(f.names, f.best.values));
+  r.set("chi2", f.best.chi2);
+  r.set("ranges", ranges_record(f.names, f.ranges));
+  Record normalised;
+  for (std::size_t a = 0; a < f.names.size(); ++a) {
+    if (f.names[a] == "gamma" && plan.gamma_l) normalised.set("gamma_over_gamma_L", f.best.values[a] / *plan.gamma_l);
+    if (f.names[a] == "yield") normalised.set("yield_over_E_soft", f.best.values[a] / plan.e_soft);
+  }
+  r.set("normalised", std::move(normalised));
+  r.set("grid_best", values_record(f.names, f.grid_best.values));
+  r.set("grid_chi2", f.grid_best.chi2);
+  Record grid, profiles;
+  for (std::size_t a = 0; a < f.names.size(); ++a) {
+    const auto& v = f.profiles[a].values;
+    grid.set(f.names[a], Record().set("lo", v.front()).set("hi", v.back()).set("points", v.size()));
+    profiles.set(f.names[a], profile_table(f.profiles[a]));
+  }
+  r.set("grid", std::move(grid));
+  r.set("profiles", std::move(profiles));
+  r.set("points", points_table(data, f.cor));
+  const std::size_t n = data.points.size(), k = f.names.size();
+  if (f.weighted_best) {
+    r.set("chi2_weighted", f.weighted_best->chi2);
+    r.set("reduced_chi2", n > k ? Value(f.weighted_best->chi2 / static_cast<double>(n - k)) : Value());
+    r.set("best_weighted", values_record(f.names, f.weighted_best->values));
+    r.set("intervals", ranges_record(f.names, f.intervals));
+    add_information_criteria(r, n, k, f.weighted_best->chi2);
+  } else {
+    add_information_criteria(r, n, k, static_cast<double>(n) * std::log(std::max(f.best.chi2, 1e-300)));
+  }
+  r.set("collisions", f.collisions);
+  r.set("failed_trials", f.failed_trials);
+  r.set("warnings", f.warnings);
+  if (timing) {
+    r.set("timing", Record()
+                        .set("grid_collisions", f.collision_seconds)
+                        .set("grid_collisions_cpu", f.collision_cpu_seconds)
+                        .set("cost_per_collision", f.collision_cpu_seconds / static_cast<double>(f.grid_collisions))
+                        .set("plastic", f.plastic_seconds)
+                        .set("chi2", f.chi2_seconds)
+                        .set("refinement", f.refine_seconds));
+  }
+  return r;
+}
+
+// A fit of one model: the plan, the problem, the result.
+struct Fitted {
+  Plan plan;
+  analysis::FitResult result;
+};
+
+Fitted run_fit(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress) {
+  const CommandSpec& c = command("fit");
+  const detail::Bound bound = detail::bind_inputs(c, inputs);
+  Fitted out{make_plan(bound, inputs, bound.model), {}};
+  const Plan& plan = out.plan;
+  analysis::FitProblem p;
+  p.data = data;
+  for (std::size_t a = 0; a < plan.fitted.size(); ++a) {
+    (plan.fitted[a].name == "yield" ? p.yield_axis.emplace() : p.collision_axes.emplace_back()) = plan.axes[a];
+  }
+  p.case_at = [&plan, &c](std::span<const double> values) {
+    Case trial = detail::make_case(detail::bind_inputs(c, trial_inputs(plan, values)));
+    return analysis::FitCase{std::move(trial.pair), std::move(trial.model), trial.options};
+  };
+  p.threads = static_cast<unsigned>(*bound.own.real("threads"));
+  p.precision = *bound.own.real("precision");
+  p.refine = !bound.own.flag("grid_only");
+  p.keep_grid = bound.own.flag("chi2_grid");
+  if (progress) p.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+  // Every speed must be one the pair takes (c_t, double precision): refused naming its line.
+  for (const auto& m : data.points) {
+    try {
+      analysis::require_impact_velocity(*plan.pair, m.velocity);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(fmt::format("{}:{}: velocity", data.source, m.line), format_value(m.velocity), e.allowed());
+    }
+  }
+  out.result = analysis::fit(p);
+  return out;
+}
+
+// The comparison of K13 Fig 6 and §4.2: the three mechanisms together and without some.
+struct Comparison {
+  const char* label;
+  const char* model;
+  const char* fit;
+  std::optional<double> a;  // a fixed A [s] (0: no bulk damping)
+};
+constexpr Comparison comparisons[] = {
+    {"K13: adhesion, viscous crack, bulk damping, plastic", "krijt", "gamma,tvis,yield", std::nullopt},
+    {"instantaneous JKR crack, bulk damping, plastic", "jkr-viscoelastic", "gamma,tvis,yield", std::nullopt},
+    {"BP04 quasi-static adhesion, viscous, plastic", "adhesive-viscoelastic", "gamma,tvis,yield", std::nullopt},
+    {"elastic JKR + plastic (K13 Fig 6 dashed)", "jkr-viscoelastic", "gamma,yield", 0.0},
+    {"viscoelastic + plastic, no adhesion", "viscoelastic", "A,yield", std::nullopt},
+};
+
+// The user's inputs for a comparison model: the pair's and the numerical ones, the model's
+// where that model takes them and does not fit them, grids of the parameters it fits.
+Inputs comparison_inputs(const Inputs& user, const Comparison& k) {
+  const std::vector<std::string> fitted = split(k.fit, ',');
+  auto fits = [&](const std::string& n) { return std::find(fitted.begin(), fitted.end(), n) != fitted.end(); };
+  const auto& row = models::model_registry().at(k.model);
+  const auto& own = command("fit").parameters;
+  Inputs in;
+  for (const auto& entry : user) {  // not a structured binding: clang 14 cannot capture one
+    const std::string& name = entry.first;
+    const ParameterValue& value = entry.second;
+    const bool pair = std::any_of(pair_parameters().begin(), pair_parameters().end(),
+                                  [&](const ParameterSpec& s) { return s.name == name; });
+    const bool model = std::any_of(row.parameters.begin(), row.parameters.end(),
+                                   [&](const ParameterSpec& s) { return s.name == name; });
+    const bool command_own = std::any_of(own.begin(), own.end(), [&](const ParameterSpec& s) { return s.name == name; });
+    if (name == "fit" || name == "compare" || name == "chi2_grid" || name == "model") continue;
+    if (name == "grid") {
+      std::vector<std::string> items;
+      for (const std::string& item : split(std::get<std::string>(value), ',')) {
+        if (fits(item.substr(0, item.find('=')))) items.push_back(item);
+      }
+      if (!items.empty()) in.emplace(name, fmt::format("{}", fmt::join(items, ",")));
+      continue;
+    }
+    if ((pair && !(fits("gamma") && (name == "gamma" || name == "gamma2"))) || command_own || (model && !fits(name))) {
+      in.emplace(name, value);
+    }
+  }
+  in["model"] = std::string(k.model);
+  in["fit"] = std::string(k.fit);
+  if (k.a) {
+    for (const char* n : {"A", "tvis", "eta1", "eta2"}) in.erase(n);
+    in["A"] = *k.a;
+  }
+  return in;
+}
+
+Record comparison_row(const Comparison& k, const Fitted& f, const analysis::Experiment& data) {
+  Record r = fit_record(f.plan, data, f.result, false);
+  Record row;
+  row.set("label", k.label);
+  row.set("model", k.model);
+  for (const char* key : {"fitted", "best", "chi2", "ranges", "parameters", "aic", "bic", "warnings"}) row.set(key, r.at(key));
+  if (r.contains("chi2_weighted")) row.set("chi2_weighted", r.at("chi2_weighted"));
+  return row;
+}
+
+// BP04 (8.88): g* of a Hertz-type model at the fitted values (and at the ends of the ranges
+// of its collision parameters), for the models that have one.
+void add_characteristic_velocity(Record& r, const Fitted& f) {
+  const Plan& plan = f.plan;
+  const auto& names = f.result.names;
+  const std::size_t collision = names.size() - (names.back() == "yield" ? 1 : 0);
+  auto g_star = [&](std::vector<double> values) -> std::optional<double> {
+    values.resize(collision);
+    const Case c = detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(plan, values)));
+    if (!c.model.hertz || !(c.model.hertz->dissipative_constant > 0.0)) return std::nullopt;
+    return analysis::viscoelastic_scales(c.pair, c.model, 1.0).characteristic_velocity;
+  };
+  const auto best = g_star(f.result.best.values);
+  if (!best) return;
+  r.set("characteristic_velocity", *best);
+  if (collision != 1) return;  // a range of g* only when A (or T_vis) alone sets it
+  const analysis::ParameterRange& range = f.result.ranges[0];
+  auto at = [&](const std::optional<double>& x) { return x ? Value(*g_star({*x})) : Value(); };
+  // g* falls as A grows: the upper end of A gives the lower end of g*.
+  r.set("characteristic_velocity_range", Value(Value::List{at(range.hi), at(range.lo)}));
+}
+
+}  // namespace
+
+Record fit(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress) {
+  const detail::Bound bound = detail::bind_inputs(command("fit"), inputs);
+  const Fitted main = run_fit(inputs, data, progress);
+  Record r = fit_record(main.plan, data, main.result, bound.own.flag("timing"));
+  add_characteristic_velocity(r, main);
+  const analysis::FitResult& f = main.result;
+  if (!f.chi2_grid.empty()) {
+    Value::List grid;
+    for (double x : f.chi2_grid) grid.push_back(std::isfinite(x) ? Value(x) : Value());
+    r.set("chi2_grid", Record()
+                           .set("shape", Value(std::vector<double>(f.grid_shape.begin(), f.grid_shape.end())))
+                           .set("values", Value(std::move(grid))));
+  }
+  if (!bound.own.flag("compare")) return r;
+  Value::List rows;
+  for (const Comparison& k : comparisons) {
+    const bool same = main.plan.model == k.model && !k.a &&
+                      fmt::format("{}", fmt::join(main.result.names, ",")) == k.fit;
+    rows.push_back(comparison_row(k, same ? main : run_fit(comparison_inputs(inputs, k), data, progress), data));
+  }
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const Value& a, const Value& b) { return a.record().at("aic").number() < b.record().at("aic").number(); });
+  r.set("comparison", Value(std::move(rows)));
+  return r;
+}
+
+}  // namespace bounce::api
