@@ -1,6 +1,6 @@
 """The papers' figures, regenerated from the library (matplotlib).
 
-Three building blocks draw on axes you give (or on a new figure's): ``cor_curve`` (e
+Three building blocks (and ``fit_curve``, ``chi2_map`` for :func:`bounce.fit`) draw on axes you give (or on a new figure's): ``cor_curve`` (e
 against impact speed), ``contact_history`` (a and F_E against the approach, beside Hertz
 and JKR) and ``energy_budget`` (the energies against time). Each figure function computes
 its curves with :mod:`bounce` and returns a :class:`matplotlib.figure.Figure` with axes
@@ -23,6 +23,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from . import _bounce as b
+from .fit_plots import chi2_map, fit_curve  # noqa: F401  (K13 Fig 6 and the chi^2 landscape of a fit)
 
 # --- the set-ups of the papers ---------------------------------------------------------
 

@@ -38,5 +38,6 @@ void bind_contact(py::module_& m);      // ContactLaw, contact_laws
 void bind_analytic(py::module_& m);     // master_cor, cor_series, cor_pade
 void bind_tables(py::module_& m);       // NormalTable, TangentialTable
 void bind_rules(py::module_& m);        // apply_restitution, collide_grains
+void bind_fit(py::module_& m);          // fit
 
 }  // namespace bounce::python

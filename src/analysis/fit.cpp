@@ -171,54 +171,66 @@ void check_problem(const FitProblem& p) {
   }
 }
 
-// The grid's e_A (per collision point and distinct speed) and the chi^2 of every grid point.
+// The grid's e_A (per collision point) and the chi^2 of every grid point.
 struct GridValues {
-  std::vector<std::vector<double>> e_a;  // empty where the collisions failed
-  std::vector<PlasticScales> scales;
-  std::vector<double> chi2, weighted;     // per (collision point, yield), +inf where failed
+  std::vector<GridPoint> points;
+  std::vector<double> chi2, weighted;  // per (collision point, yield), +inf where failed
   std::size_t failed = 0;
   std::string first_failure;
 };
 
-void integrate_grid(const FitProblem& p, const Evaluator& ev, GridValues& g) {
+PlasticScales scales_of(const GridPoint& g) { return {g.radius, g.mass, g.modulus}; }
+
+GridPoint integrate_point(const FitProblem& p, const Evaluator& ev, std::size_t i, unsigned threads) {
+  GridPoint g;
+  PlasticScales scales;
+  if (auto e = ev.adhesive(values_at(p.collision_axes, i), threads, scales, g.failure)) {
+    g.cor = std::move(*e);
+  } else if (g.failure.empty()) {
+    g.failure = "a collision failed";
+  }
+  g.radius = scales.radius, g.mass = scales.mass, g.modulus = scales.modulus;
+  return g;
+}
+
+std::vector<GridPoint> integrate_grid(const FitProblem& p, const Evaluator& ev) {
   const std::size_t n = product(p.collision_axes);
-  g.e_a.assign(n, {});
-  g.scales.assign(n, {});
-  std::vector<std::string> failures(n);
+  std::vector<GridPoint> points(n);
   std::mutex progress_mutex;
   std::size_t done = 0;
   const std::size_t total = n * ev.speeds().size();
   detail::parallel_for(n, p.threads, [&](std::size_t i, unsigned) {
-    const std::vector<double> values = values_at(p.collision_axes, i);
-    std::string failure;
-    if (auto e = ev.adhesive(values, 1, g.scales[i], failure)) {
-      g.e_a[i] = std::move(*e);
-    } else {
-      failures[i] = failure.empty() ? "a collision failed" : failure;
-    }
+    points[i] = integrate_point(p, ev, i, 1);
     if (p.progress) {
       const std::lock_guard lock(progress_mutex);
       done += ev.speeds().size();
       p.progress(done, total);
     }
   });
-  for (std::size_t i = 0; i < n; ++i) {
-    if (failures[i].empty()) continue;
-    if (g.failed++ == 0) g.first_failure = failures[i];
+  return points;
+}
+
+void count_failures(GridValues& g, const Evaluator& ev) {
+  for (const GridPoint& point : g.points) {
+    if (point.failure.empty() && point.cor.size() == ev.speeds().size()) continue;
+    if (g.failed++ == 0) g.first_failure = point.failure.empty() ? "a point with the wrong number of speeds" : point.failure;
   }
 }
+
+bool failed(const GridPoint& g, const Evaluator& ev) { return !g.failure.empty() || g.cor.size() != ev.speeds().size(); }
 
 // chi^2 at every (collision point, yield value). e_P depends on the pair's scales, the yield
 // strength and the speed only: one table for the grid when every point has the same pair
 // (fitting gamma, T_vis, A, z0 or k), else computed per point.
 void grid_chi2(const FitProblem& p, const Evaluator& ev, GridValues& g, FitResult& r) {
   using Clock = std::chrono::steady_clock;
-  const std::size_t n = g.e_a.size(), ny = p.yield_axis ? p.yield_axis->values.size() : 1;
+  const std::size_t n = g.points.size(), ny = p.yield_axis ? p.yield_axis->values.size() : 1;
   const bool weighted = p.data.has_errors();
   auto yield_at = [&](std::size_t y) { return p.yield_axis ? std::optional(p.yield_axis->values[y]) : std::nullopt; };
-  const auto first = std::find_if(g.e_a.begin(), g.e_a.end(), [](const auto& e) { return !e.empty(); });
-  const PlasticScales common = g.scales[static_cast<std::size_t>(first - g.e_a.begin())];
-  const bool shared = std::all_of(g.scales.begin(), g.scales.end(), [&](const PlasticScales& s) { return s == common; });
+  const auto first = std::find_if(g.points.begin(), g.points.end(), [&](const GridPoint& x) { return !failed(x, ev); });
+  const PlasticScales common = scales_of(*first);
+  const bool shared = std::all_of(g.points.begin(), g.points.end(),
+                                  [&](const GridPoint& x) { return failed(x, ev) || scales_of(x) == common; });
   auto start = Clock::now();
   std::vector<std::vector<double>> e_p(ny);
   if (shared) {
@@ -229,10 +241,10 @@ void grid_chi2(const FitProblem& p, const Evaluator& ev, GridValues& g, FitResul
   g.chi2.assign(n * ny, inf);
   if (weighted) g.weighted.assign(n * ny, inf);
   detail::parallel_for(n, p.threads, [&](std::size_t i, unsigned) {
-    if (g.e_a[i].empty()) return;
+    if (failed(g.points[i], ev)) return;
     std::vector<double> cor(p.data.points.size());
     for (std::size_t y = 0; y < ny; ++y) {
-      ev.combine(g.e_a[i], shared ? e_p[y] : ev.plastic_cors(g.scales[i], yield_at(y)), cor);
+      ev.combine(g.points[i].cor, shared ? e_p[y] : ev.plastic_cors(scales_of(g.points[i]), yield_at(y)), cor);
       g.chi2[i * ny + y] = ev.objective(cor, false);
       if (weighted) g.weighted[i * ny + y] = ev.objective(cor, true);
     }
@@ -285,36 +297,31 @@ void warn_about_edges(FitResult& r, const FitMinimum& best, const std::vector<Pr
   }
 }
 
-}  // namespace
-
-FitResult fit(const FitProblem& p) {
-  check_problem(p);
-  const Evaluator ev(p);
-  FitResult r;
+// The fit from the grid's points (the rest of K13 §4.1 and the refinements).
+FitResult finish(const FitProblem& p, const Evaluator& ev, std::vector<GridPoint> points, FitResult r) {
   for (const FitAxis& a : p.collision_axes) r.names.push_back(a.name);
   if (p.yield_axis) r.names.push_back(p.yield_axis->name);
   for (const FitAxis& a : p.collision_axes) r.grid_shape.push_back(a.values.size());
   if (p.yield_axis) r.grid_shape.push_back(p.yield_axis->values.size());
-
-  GridValues g;
-  const auto grid_start = std::chrono::steady_clock::now();
-  integrate_grid(p, ev, g);
-  r.collision_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - grid_start).count();
-  r.collision_cpu_seconds = ev.collision_seconds();
-  r.grid_collisions = ev.collisions();
+  if (points.size() != product(p.collision_axes)) {
+    throw std::logic_error(fmt::format("{} grid points for a grid of {}", points.size(), product(p.collision_axes)));
+  }
+  GridValues g{std::move(points), {}, {}, 0, {}};
+  count_failures(g, ev);
   r.failed_trials = g.failed;
-  if (g.failed == g.e_a.size()) {
+  if (g.failed == g.points.size()) {
     throw NumericalError(fmt::format("no trial of the grid could be evaluated; the first failure: {}", g.first_failure));
   }
   if (g.failed > 0) {
     r.warnings.push_back(fmt::format("{} of {} grid points failed and count as chi^2 = inf; the first: {}", g.failed,
-                                     g.e_a.size(), g.first_failure));
+                                     g.points.size(), g.first_failure));
   }
   grid_chi2(p, ev, g, r);
   r.profiles = profiles(p, g.chi2);
   r.grid_best = grid_minimum(p, g.chi2);
 
   const auto refine_start = std::chrono::steady_clock::now();
+  const std::size_t before = ev.collisions();
   r.best = p.refine ? detail::refine(ev, r.grid_best, false, r.cor) : r.grid_best;
   if (!p.refine || r.cor.empty()) {
     PlasticScales scales;
@@ -333,7 +340,7 @@ FitResult fit(const FitProblem& p) {
     r.intervals = ranges(r.weighted_profiles, *r.weighted_best, r.weighted_best->chi2 + 1.0);  // Delta chi^2 = 1
   }
   r.refine_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - refine_start).count();
-  r.collisions = ev.collisions();
+  r.collisions = r.grid_collisions + (ev.collisions() - before);
   if (p.keep_grid) r.chi2_grid = std::move(g.chi2);
   warn_about_edges(r, r.best, r.profiles);
   if (p.data.points.size() <= r.names.size()) {
@@ -341,6 +348,37 @@ FitResult fit(const FitProblem& p) {
                                      p.data.points.size(), r.names.size()));
   }
   return r;
+}
+
+}  // namespace
+
+std::size_t grid_point_count(const FitProblem& p) { return product(p.collision_axes); }
+
+GridPoint integrate_grid_point(const FitProblem& p, std::size_t index) {
+  check_problem(p);
+  if (index >= product(p.collision_axes)) throw std::out_of_range("grid point index");
+  const Evaluator ev(p);
+  return integrate_point(p, ev, index, p.threads);
+}
+
+FitResult fit(const FitProblem& p, std::vector<GridPoint> points) {
+  check_problem(p);
+  const Evaluator ev(p);
+  FitResult r;
+  r.grid_collisions = points.size() * ev.speeds().size();
+  return finish(p, ev, std::move(points), std::move(r));
+}
+
+FitResult fit(const FitProblem& p) {
+  check_problem(p);
+  const Evaluator ev(p);
+  FitResult r;
+  const auto grid_start = std::chrono::steady_clock::now();
+  std::vector<GridPoint> points = integrate_grid(p, ev);
+  r.collision_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - grid_start).count();
+  r.collision_cpu_seconds = ev.collision_seconds();
+  r.grid_collisions = ev.collisions();
+  return finish(p, ev, std::move(points), std::move(r));
 }
 
 }  // namespace bounce::analysis

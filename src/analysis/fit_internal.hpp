@@ -9,11 +9,6 @@
 
 #include "bounce/analysis/fit.hpp"
 
-namespace bounce::analysis {
-/// K13 (30) from e_A and e_P: e_A where e_P = 1 (below the yield velocity) or e_A = 0.
-double combine_plastic(double cor_adhesive, double cor_plastic);
-}  // namespace bounce::analysis
-
 namespace bounce::analysis::detail {
 
 /// The pair's scales that fix the yield velocity K13 (28).

@@ -398,6 +398,46 @@ void add_characteristic_velocity(Record& r, const Fitted& f) {
   r.set("characteristic_velocity_range", Value(Value::List{at(range.hi), at(range.lo)}));
 }
 
+// The best fit as a curve over the data's speeds (K13 Fig 6): e (30), e_A, e_P (29), and
+// e_JKR of K13 (24) at the fitted gamma for the adhesive models (a speed whose collision
+// fails is left out).
+Table best_curve(const Fitted& f, const analysis::Experiment& data) {
+  const auto& names = f.result.names;
+  const bool yield = names.back() == "yield";
+  std::vector<double> values = f.result.best.values;
+  if (yield) values.pop_back();
+  const Case c = detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(f.plan, values)));
+  double lo = data.points.front().velocity, hi = lo;
+  for (const auto& m : data.points) lo = std::min(lo, m.velocity), hi = std::max(hi, m.velocity);
+  lo /= 2.0;
+  hi = std::min(2.0 * hi, c.pair.transversal_sound_speed());
+  const auto gamma = c.pair.surface_energy();
+  const bool adhesive = c.model.capabilities.adhesive && gamma && *gamma > 0.0;
+  const double v_s = adhesive ? analytic::sticking_velocity_k13(c.pair.effective_mass(), c.pair.effective_radius(),
+                                                               c.pair.effective_modulus(), *gamma)
+                              : 0.0;  // K13 (25)
+  Table t;
+  t.columns = {"velocity", "cor", "cor_adhesive", "cor_plastic", "cor_jkr"};
+  constexpr int n = 80;
+  for (int i = 0; i < n; ++i) {
+    const double v = lo * std::pow(hi / lo, i / (n - 1.0));
+    double e_a = 0.0;
+    try {
+      e_a = analysis::cor(c.pair, c.model, v, c.options);
+    } catch (const Error&) {
+      continue;
+    }
+    const std::optional<double> y = yield ? std::optional(f.result.best.values.back()) : std::nullopt;
+    const double e_p = y ? analytic::cor_thornton_ning(
+                               v, analytic::yield_velocity(c.pair.effective_radius(), c.pair.effective_mass(),
+                                                           c.pair.effective_modulus(), *y))
+                         : 1.0;  // K13 (28)-(29)
+    t.rows.push_back({v, analysis::combine_plastic(e_a, e_p), e_a, e_p,
+                      adhesive ? Value(analytic::cor_jkr(v, v_s)) : Value()});  // K13 (24)
+  }
+  return t;
+}
+
 }  // namespace
 
 Record fit(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress) {
@@ -405,6 +445,7 @@ Record fit(const Inputs& inputs, const analysis::Experiment& data, const Progres
   const Fitted main = run_fit(inputs, data, progress);
   Record r = fit_record(main.plan, data, main.result, bound.own.flag("timing"));
   add_characteristic_velocity(r, main);
+  r.set("curve", best_curve(main, data));
   const analysis::FitResult& f = main.result;
   if (!f.chi2_grid.empty()) {
     Value::List grid;

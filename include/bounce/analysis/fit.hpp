@@ -140,6 +140,26 @@ struct FitResult {
 /// pair refuses (naming the line); NumericalError when no trial could be evaluated.
 FitResult fit(const FitProblem& problem);
 
+// --- the grid in pieces (a batch over MPI ranks, checkpoints) ---------------------------
+
+/// The collisions of one point of the grid of collision axes.
+struct GridPoint {
+  std::vector<double> cor;  ///< e_A at each distinct speed of the data (ascending); empty if failed
+  double radius = 0.0, mass = 0.0, modulus = 0.0;  ///< the trial pair's R_eff, m_eff, E* (K13 (28))
+  std::string failure;      ///< why the collisions failed
+};
+/// The points of the grid of collision axes (row-major, the last axis fastest; 1 without).
+std::size_t grid_point_count(const FitProblem& problem);
+/// The collisions of grid point `index` (on `problem.threads` threads over the speeds). The
+/// same numbers wherever and whenever it runs.
+GridPoint integrate_grid_point(const FitProblem& problem, std::size_t index);
+/// The fit from every grid point, computed elsewhere (in index order): fit() without its
+/// own integration of the grid.
+FitResult fit(const FitProblem& problem, std::vector<GridPoint> points);
+
+/// K13 (30) from e_A and e_P: e_A where e_P = 1 (below the yield velocity) or e_A = 0.
+double combine_plastic(double cor_adhesive, double cor_plastic);
+
 /// e of K13 (30) from e_A and the yield strength (none: e_A): (28)-(29) for the pair, 0 where
 /// the radicand is negative (the grains stick) or e_A = 0.
 double cor_with_yield(const Pair& pair, double velocity, double cor_adhesive, std::optional<double> yield);
