@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "bounce/core/error.hpp"
+#include "batch.hpp"
 #include "output.hpp"
 #include "text.hpp"
 
@@ -214,11 +215,34 @@ std::function<int()> table(Options& o) {
   };
 }
 
+int fit_batch(const Options& o, const std::string& manifest, const std::string* checkpoint, bool json, bool progress) {
+  for (const auto& [name, value] : o.inputs()) {
+    throw InvalidArgument(name, value_text(value), "none with --batch: each experiment's options are in the manifest");
+  }
+  if (o.given("data")) throw InvalidArgument("data", o.typed("data"), "none with --batch (the manifest names the data)");
+  const BatchResult r = run_batch(manifest, o.given("checkpoint") ? std::optional(*checkpoint) : std::nullopt, progress);
+  if (!r.printer) return r.exit_code;
+  if (json) {
+    print_json(r.record);
+  } else {
+    std::string text;
+    for (const Value& e : r.record.at("experiments").list()) {
+      text += fmt::format("== {}\n{}", e.record().at("name").text(), fit_text(e.record()));
+    }
+    print_text(r.record, text);
+  }
+  return 0;
+}
+
 std::function<int()> fit(Options& o) {
   const std::string* data = o.add_text("data", "CSV of the measured restitution curve (docs/fitting.md; - for standard input)", "FILE");
+  const std::string* batch = o.add_text("batch", "TOML manifest of experiments to fit (mpirun -np N: over N ranks)", "FILE");
+  const std::string* checkpoint = o.add_text("checkpoint", "with --batch: keep finished grid blocks in DIR, reuse them", "DIR");
   const bool* json = o.add_flag("json", "print JSON");
   const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
-  return [&o, data, json, progress] {
+  return [&o, data, batch, checkpoint, json, progress] {
+    if (o.given("batch")) return fit_batch(o, *batch, checkpoint, *json, *progress);
+    if (o.given("checkpoint")) throw InvalidArgument("checkpoint", *checkpoint, "--batch with it (a batch's blocks)");
     if (!o.given("data")) throw InvalidArgument("data", "(not given)", "a CSV file of velocity,cor[,cor_error][,outcome]");
     const std::string text = read_file("data", *data, "a readable CSV file (or - for standard input)");
     const analysis::Experiment experiment = analysis::parse_experiment(text, *data == "-" ? "(standard input)" : *data);

@@ -354,11 +354,15 @@ FitResult finish(const FitProblem& p, const Evaluator& ev, std::vector<GridPoint
 
 std::size_t grid_point_count(const FitProblem& p) { return product(p.collision_axes); }
 
-GridPoint integrate_grid_point(const FitProblem& p, std::size_t index) {
+std::vector<GridPoint> integrate_grid_points(const FitProblem& p, std::size_t first, std::size_t count) {
   check_problem(p);
-  if (index >= product(p.collision_axes)) throw std::out_of_range("grid point index");
+  if (first > product(p.collision_axes) || count > product(p.collision_axes) - first) {
+    throw std::out_of_range("grid points beyond the grid");
+  }
   const Evaluator ev(p);
-  return integrate_point(p, ev, index, p.threads);
+  std::vector<GridPoint> out(count);
+  detail::parallel_for(count, p.threads, [&](std::size_t i, unsigned) { out[i] = integrate_point(p, ev, first + i, 1); });
+  return out;
 }
 
 FitResult fit(const FitProblem& p, std::vector<GridPoint> points) {

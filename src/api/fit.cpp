@@ -47,6 +47,10 @@ std::vector<std::string> split(const std::string& text, char separator) {
   }
 }
 
+}  // namespace
+
+namespace detail {
+// What a fit's inputs say: the model, the fitted parameters and their grids, the fixed inputs.
 struct Plan {
   std::string model;
   std::vector<ParameterSpec> fitted;  // collision parameters first, yield last
@@ -56,6 +60,11 @@ struct Plan {
   std::optional<double> gamma_l;
   double e_soft = 0.0;
 };
+}  // namespace detail
+
+namespace {
+
+using detail::Plan;
 
 std::vector<ParameterSpec> chosen_parameters(const std::string& model, const std::string& text) {
   const auto offered = fittable_parameters(model);
@@ -276,18 +285,26 @@ Record fit_record(const Plan& plan, const analysis::Experiment& data, const anal
   return r;
 }
 
-// A fit of one model: the plan, the problem, the result.
-struct Fitted {
+}  // namespace
+
+// A fit prepared: the plan and the problem (whose case_at refers to the plan: it does not
+// move, FitJob shares it).
+struct FitJob::State {
   Plan plan;
-  analysis::FitResult result;
+  analysis::FitProblem problem;
+  bool timing = false;
 };
 
-Fitted run_fit(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress) {
+namespace {
+
+std::shared_ptr<FitJob::State> prepare(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress) {
   const CommandSpec& c = command("fit");
   const detail::Bound bound = detail::bind_inputs(c, inputs);
-  Fitted out{make_plan(bound, inputs, bound.model), {}};
-  const Plan& plan = out.plan;
-  analysis::FitProblem p;
+  auto state = std::make_shared<FitJob::State>();
+  state->plan = make_plan(bound, inputs, bound.model);
+  state->timing = bound.own.flag("timing");
+  const Plan& plan = state->plan;
+  analysis::FitProblem& p = state->problem;
   p.data = data;
   for (std::size_t a = 0; a < plan.fitted.size(); ++a) {
     (plan.fitted[a].name == "yield" ? p.yield_axis.emplace() : p.collision_axes.emplace_back()) = plan.axes[a];
@@ -300,7 +317,7 @@ Fitted run_fit(const Inputs& inputs, const analysis::Experiment& data, const Pro
   p.precision = *bound.own.real("precision");
   p.refine = !bound.own.flag("grid_only");
   p.keep_grid = bound.own.flag("chi2_grid");
-  if (progress) p.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+  if (progress) p.progress = [progress](std::size_t done, std::size_t total) { progress(done, total); };
   // Every speed must be one the pair takes (c_t, double precision): refused naming its line.
   for (const auto& m : data.points) {
     try {
@@ -309,8 +326,20 @@ Fitted run_fit(const Inputs& inputs, const analysis::Experiment& data, const Pro
       throw InvalidArgument(fmt::format("{}:{}: velocity", data.source, m.line), format_value(m.velocity), e.allowed());
     }
   }
-  out.result = analysis::fit(p);
-  return out;
+  return state;
+}
+
+// A fit of one model: its prepared state and the result.
+struct Fitted {
+  std::shared_ptr<const FitJob::State> state;
+  analysis::FitResult result;
+  const Plan& plan() const { return state->plan; }
+};
+
+Fitted run_fit(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress) {
+  auto state = prepare(inputs, data, progress);
+  analysis::FitResult result = analysis::fit(state->problem);
+  return {std::move(state), std::move(result)};
 }
 
 // The comparison of K13 Fig 6 and §4.2: the three mechanisms together and without some.
@@ -367,7 +396,7 @@ Inputs comparison_inputs(const Inputs& user, const Comparison& k) {
 }
 
 Record comparison_row(const Comparison& k, const Fitted& f, const analysis::Experiment& data) {
-  Record r = fit_record(f.plan, data, f.result, false);
+  Record r = fit_record(f.plan(), data, f.result, false);
   Record row;
   row.set("label", k.label);
   row.set("model", k.model);
@@ -379,7 +408,7 @@ Record comparison_row(const Comparison& k, const Fitted& f, const analysis::Expe
 // BP04 (8.88): g* of a Hertz-type model at the fitted values (and at the ends of the ranges
 // of its collision parameters), for the models that have one.
 void add_characteristic_velocity(Record& r, const Fitted& f) {
-  const Plan& plan = f.plan;
+  const Plan& plan = f.plan();
   const auto& names = f.result.names;
   const std::size_t collision = names.size() - (names.back() == "yield" ? 1 : 0);
   auto g_star = [&](std::vector<double> values) -> std::optional<double> {
@@ -406,7 +435,7 @@ Table best_curve(const Fitted& f, const analysis::Experiment& data) {
   const bool yield = names.back() == "yield";
   std::vector<double> values = f.result.best.values;
   if (yield) values.pop_back();
-  const Case c = detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(f.plan, values)));
+  const Case c = detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(f.plan(), values)));
   double lo = data.points.front().velocity, hi = lo;
   for (const auto& m : data.points) lo = std::min(lo, m.velocity), hi = std::max(hi, m.velocity);
   lo /= 2.0;
@@ -438,26 +467,33 @@ Table best_curve(const Fitted& f, const analysis::Experiment& data) {
   return t;
 }
 
+// The Record of a fit: K13's numbers, g*, the best-fit curve, the grid when kept.
+Record result_record(const Fitted& f) {
+  const analysis::Experiment& data = f.state->problem.data;
+  Record r = fit_record(f.plan(), data, f.result, f.state->timing);
+  add_characteristic_velocity(r, f);
+  r.set("curve", best_curve(f, data));
+  if (!f.result.chi2_grid.empty()) {
+    Value::List grid;
+    for (double x : f.result.chi2_grid) grid.push_back(std::isfinite(x) ? Value(x) : Value());
+    const auto& shape = f.result.grid_shape;
+    r.set("chi2_grid", Record()
+                           .set("shape", Value(std::vector<double>(shape.begin(), shape.end())))
+                           .set("values", Value(std::move(grid))));
+  }
+  return r;
+}
+
 }  // namespace
 
 Record fit(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress) {
   const detail::Bound bound = detail::bind_inputs(command("fit"), inputs);
   const Fitted main = run_fit(inputs, data, progress);
-  Record r = fit_record(main.plan, data, main.result, bound.own.flag("timing"));
-  add_characteristic_velocity(r, main);
-  r.set("curve", best_curve(main, data));
-  const analysis::FitResult& f = main.result;
-  if (!f.chi2_grid.empty()) {
-    Value::List grid;
-    for (double x : f.chi2_grid) grid.push_back(std::isfinite(x) ? Value(x) : Value());
-    r.set("chi2_grid", Record()
-                           .set("shape", Value(std::vector<double>(f.grid_shape.begin(), f.grid_shape.end())))
-                           .set("values", Value(std::move(grid))));
-  }
+  Record r = result_record(main);
   if (!bound.own.flag("compare")) return r;
   Value::List rows;
   for (const Comparison& k : comparisons) {
-    const bool same = main.plan.model == k.model && !k.a &&
+    const bool same = main.plan().model == k.model && !k.a &&
                       fmt::format("{}", fmt::join(main.result.names, ",")) == k.fit;
     rows.push_back(comparison_row(k, same ? main : run_fit(comparison_inputs(inputs, k), data, progress), data));
   }
@@ -466,5 +502,25 @@ Record fit(const Inputs& inputs, const analysis::Experiment& data, const Progres
   r.set("comparison", Value(std::move(rows)));
   return r;
 }
+
+FitJob::FitJob(const Inputs& inputs, const analysis::Experiment& data) {
+  const detail::Bound bound = detail::bind_inputs(command("fit"), inputs);
+  for (const char* name : {"compare", "chi2_grid", "timing"}) {
+    if (bound.own.flag(name)) throw InvalidArgument(name, "true", "none in a batch (a fit of one experiment has it)");
+  }
+  state_ = prepare(inputs, data, {});
+}
+
+std::size_t FitJob::grid_points() const { return analysis::grid_point_count(state_->problem); }
+
+std::vector<analysis::GridPoint> FitJob::integrate(std::size_t first, std::size_t count) const {
+  return analysis::integrate_grid_points(state_->problem, first, count);
+}
+
+Record FitJob::finish(std::vector<analysis::GridPoint> points) const {
+  return result_record(Fitted{state_, analysis::fit(state_->problem, std::move(points))});
+}
+
+const analysis::FitProblem& FitJob::problem() const { return state_->problem; }
 
 }  // namespace bounce::api

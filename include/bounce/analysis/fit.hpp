@@ -150,9 +150,9 @@ struct GridPoint {
 };
 /// The points of the grid of collision axes (row-major, the last axis fastest; 1 without).
 std::size_t grid_point_count(const FitProblem& problem);
-/// The collisions of grid point `index` (on `problem.threads` threads over the speeds). The
-/// same numbers wherever and whenever it runs.
-GridPoint integrate_grid_point(const FitProblem& problem, std::size_t index);
+/// The collisions of grid points [first, first + count) (on `problem.threads` threads). The
+/// same numbers wherever and whenever they run.
+std::vector<GridPoint> integrate_grid_points(const FitProblem& problem, std::size_t first, std::size_t count);
 /// The fit from every grid point, computed elsewhere (in index order): fit() without its
 /// own integration of the grid.
 FitResult fit(const FitProblem& problem, std::vector<GridPoint> points);

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -107,6 +108,36 @@ Record table_value(std::string_view json, const Inputs& inputs);
 /// factor-2 ranges, chi^2 (31), profiles, the data with the model's e; Delta chi^2 = 1
 /// intervals when every point has an error; with `compare`, the comparison models too.
 Record fit(const Inputs& inputs, const analysis::Experiment& data, const Progress& progress = {});
+
+/// A fit in two steps, for a batch over MPI ranks (docs/fitting.md): the grid's points,
+/// integrated anywhere in pieces, then the Record from all of them (the same as fit()'s
+/// without `compare`, which a batch refuses, as it does `chi2_grid` and `timing`).
+class FitJob {
+ public:
+  FitJob(const Inputs& inputs, const analysis::Experiment& data);
+  std::size_t grid_points() const;
+  /// Grid points [first, first + count), on the fit's threads.
+  std::vector<analysis::GridPoint> integrate(std::size_t first, std::size_t count) const;
+  /// The fit from every grid point, in order.
+  Record finish(std::vector<analysis::GridPoint> points) const;
+  const analysis::FitProblem& problem() const;
+
+  struct State;
+
+ private:
+  std::shared_ptr<const State> state_;
+};
+
+/// One experiment of a batch manifest (TOML, docs/fitting.md): its name, its data and the
+/// fit's inputs (the manifest's [defaults] with the entry's own on top).
+struct BatchEntry {
+  std::string name;
+  analysis::Experiment data;
+  Inputs inputs;
+};
+/// The entries of a manifest; `directory` resolves their data files. InvalidArgument naming
+/// "FILE: experiment N: KEY" for a malformed manifest or data file.
+std::vector<BatchEntry> read_fit_manifest(std::string_view text, const std::string& source, const std::string& directory);
 
 /// The materials table (built-in, or materials_file).
 Value materials(const Inputs& inputs);

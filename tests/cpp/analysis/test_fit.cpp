@@ -235,8 +235,16 @@ TEST(FitGrid, PointsComputedElsewhereGiveTheSameFit) {
   p.yield_axis = FitAxis{"yield", geometric(1e6, 1e10, 17)};
   p.keep_grid = true;
   const FitResult whole = fit(p);
-  std::vector<GridPoint> points(grid_point_count(p));
-  for (std::size_t i = points.size(); i-- > 0;) points[i] = integrate_grid_point(p, i);
+  // In three pieces, the last first, on one and two threads.
+  const std::size_t n = grid_point_count(p);
+  std::vector<GridPoint> points = integrate_grid_points(p, 0, 7);
+  p.threads = 1;
+  const std::vector<GridPoint> last = integrate_grid_points(p, 16, n - 16);
+  p.threads = 2;
+  const std::vector<GridPoint> middle = integrate_grid_points(p, 7, 9);
+  points.insert(points.end(), middle.begin(), middle.end());
+  points.insert(points.end(), last.begin(), last.end());
+  EXPECT_THROW(integrate_grid_points(p, n - 1, 2), std::out_of_range);
   const FitResult pieces = fit(p, points);
   EXPECT_EQ(pieces.chi2_grid, whole.chi2_grid);
   EXPECT_EQ(pieces.best.values, whole.best.values);

@@ -1,0 +1,299 @@
+// The batch of fits over MPI ranks (docs/fitting.md). Every rank reads the manifest and
+// prepares every fit (cheap); the grids' points are cut into blocks of a fixed size, block u
+// of the batch runs on rank u mod N (or is read back from the checkpoint), rank 0 gathers
+// the blocks in order and finishes each fit. A grid point's numbers do not depend on where it
+// ran, so the output is the same for any number of ranks, and after a restart.
+#include "batch.hpp"
+
+#include <cstdint>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "bounce/api/front_door.hpp"
+#include "bounce/core/error.hpp"
+#include "output.hpp"
+
+#ifdef BOUNCE_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace bounce::cli {
+
+namespace {
+
+// Points per block: ~60 K13 collisions x 30 speeds, a few seconds; independent of the ranks,
+// so that a checkpoint written with N ranks serves a restart with M.
+constexpr std::size_t block_size = 60;
+
+struct Unit {
+  std::size_t entry, first, count, index;
+};
+
+// FNV-1a over what fixes a fit's grid points: the entry's inputs, data and grid. A
+// checkpoint of another manifest (or an edited one) is refused, not mixed in.
+std::uint64_t fingerprint(const api::BatchEntry& e, const api::FitJob& job) {
+  std::string text = e.name;
+  for (const auto& [key, value] : e.inputs) text += fmt::format("|{}={}", key, value_text(value));
+  for (const auto& m : job.problem().data.points) text += fmt::format("|{:a},{:a}", m.velocity, m.cor);
+  for (const auto& axis : job.problem().collision_axes) {
+    text += "|" + axis.name;
+    for (double v : axis.values) text += fmt::format(",{:a}", v);
+  }
+  std::uint64_t h = 14695981039346656037ULL;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ULL;
+  return h;
+}
+
+// A block as text: exact (hexadecimal floats), the same in a checkpoint file and a message.
+std::string serialise(std::uint64_t print, const Unit& u, const std::vector<analysis::GridPoint>& points) {
+  std::string s = fmt::format("bounce-fit-block 1 {:016x} {} {}\n", print, u.first, u.count);
+  for (const auto& p : points) {
+    s += fmt::format("{} {:a} {:a} {:a} {}", p.failure.empty() ? 'p' : 'f', p.radius, p.mass, p.modulus, p.cor.size());
+    for (double c : p.cor) s += fmt::format(" {:a}", c);
+    std::string why = p.failure;
+    for (char& c : why) c = c == '\n' ? ' ' : c;
+    s += p.failure.empty() ? "\n" : " " + why + "\n";
+  }
+  return s;
+}
+
+double hex_number(std::istringstream& in) {
+  std::string word;
+  in >> word;
+  char* end = nullptr;
+  const double x = std::strtod(word.c_str(), &end);
+  if (word.empty() || end != word.c_str() + word.size()) throw std::runtime_error("bad number " + word);
+  return x;
+}
+
+// The block back, or none when the text is not this block of this fit (another manifest).
+std::optional<std::vector<analysis::GridPoint>> deserialise(const std::string& text, std::uint64_t print, const Unit& u) {
+  std::istringstream in(text);
+  std::string tag, version, stored;
+  std::size_t first = 0, count = 0;
+  in >> tag >> version >> stored >> first >> count;
+  if (tag != "bounce-fit-block" || version != "1" || stored != fmt::format("{:016x}", print) || first != u.first ||
+      count != u.count) {
+    return std::nullopt;
+  }
+  std::vector<analysis::GridPoint> points(count);
+  try {
+    for (auto& p : points) {
+      char kind = 0;
+      std::size_t n = 0;
+      in >> kind;
+      p.radius = hex_number(in), p.mass = hex_number(in), p.modulus = hex_number(in);
+      in >> n;
+      for (std::size_t k = 0; k < n; ++k) p.cor.push_back(hex_number(in));
+      if (kind == 'f') std::getline(in >> std::ws, p.failure);
+      if (!in || (kind != 'p' && kind != 'f')) return std::nullopt;
+    }
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
+  return points;
+}
+
+std::filesystem::path block_file(const std::string& dir, const Unit& u) {
+  return std::filesystem::path(dir) / fmt::format("experiment-{}-points-{}.block", u.entry + 1, u.first);
+}
+
+// A finished block from the checkpoint directory, if there is one of this fit.
+std::optional<std::vector<analysis::GridPoint>> load(const std::optional<std::string>& dir, std::uint64_t print,
+                                                     const Unit& u) {
+  if (!dir) return std::nullopt;
+  std::ifstream file(block_file(*dir, u));
+  if (!file) return std::nullopt;
+  std::stringstream text;
+  text << file.rdbuf();
+  auto points = deserialise(text.str(), print, u);
+  if (!points) {
+    throw InvalidArgument("checkpoint", block_file(*dir, u).string(),
+                          "a block of this manifest's fits (the manifest or its data changed: use an empty directory)");
+  }
+  return points;
+}
+
+// Written to a temporary name, then renamed: a killed process leaves whole blocks only.
+void save(const std::string& dir, const Unit& u, const std::string& text) {
+  const auto path = block_file(dir, u);
+  const auto temporary = path.string() + ".part";
+  {
+    std::ofstream file(temporary);
+    file << text;
+    if (!file) throw NumericalError(fmt::format("could not write the checkpoint {}", temporary));
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+struct Mpi {
+  int rank = 0, size = 1;
+#ifdef BOUNCE_HAVE_MPI
+  bool started = false;
+  Mpi() {
+    int initialised = 0;
+    MPI_Initialized(&initialised);
+    if (!initialised) {
+      MPI_Init(nullptr, nullptr);
+      started = true;
+    }
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+  }
+  ~Mpi() {
+    if (started) MPI_Finalize();
+  }
+  int max(int value) const {
+    int out = 0;
+    MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return out;
+  }
+  long sum(long value) const {
+    long out = 0;
+    MPI_Allreduce(&value, &out, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+    return out;
+  }
+  void send(const std::string& text, int tag) const {
+    MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, tag, MPI_COMM_WORLD);
+  }
+  std::string receive(int source, int tag) const {
+    MPI_Status status;
+    MPI_Probe(source, tag, MPI_COMM_WORLD, &status);
+    int n = 0;
+    MPI_Get_count(&status, MPI_CHAR, &n);
+    std::string text(static_cast<std::size_t>(n), '\0');
+    MPI_Recv(text.data(), n, MPI_CHAR, source, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    return text;
+  }
+#else
+  int max(int value) const { return value; }
+  long sum(long value) const { return value; }
+#endif
+  Mpi(const Mpi&) = delete;
+  Mpi& operator=(const Mpi&) = delete;
+};
+
+int code_of(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const InvalidArgument&) {
+    return 2;
+  } catch (const NumericalError&) {
+    return 3;
+  } catch (...) {
+    return 4;
+  }
+}
+
+struct Batch {
+  std::vector<api::BatchEntry> entries;
+  std::vector<api::FitJob> jobs;
+  std::vector<std::uint64_t> prints;
+  std::vector<Unit> units;
+};
+
+Batch prepare(const std::string& manifest) {
+  std::ifstream file(manifest);
+  std::stringstream text;
+  std::error_code ec;
+  if (file && !std::filesystem::is_directory(manifest, ec)) text << file.rdbuf();
+  if (manifest.empty() || !file || std::filesystem::is_directory(manifest, ec)) {
+    throw InvalidArgument("batch", manifest.empty() ? "\"\"" : manifest, "a readable TOML manifest (docs/fitting.md)");
+  }
+  Batch b;
+  b.entries = api::read_fit_manifest(text.str(), manifest, std::filesystem::path(manifest).parent_path().string());
+  for (std::size_t e = 0; e < b.entries.size(); ++e) {
+    try {
+      b.jobs.emplace_back(b.entries[e].inputs, b.entries[e].data);
+    } catch (const InvalidArgument& error) {
+      throw error.renamed(fmt::format("{}: {}: {}", manifest, b.entries[e].name, error.parameter()));
+    }
+    b.prints.push_back(fingerprint(b.entries[e], b.jobs.back()));
+    const std::size_t n = b.jobs.back().grid_points();
+    for (std::size_t first = 0; first < n; first += block_size) {
+      b.units.push_back({e, first, std::min(block_size, n - first), b.units.size()});
+    }
+  }
+  return b;
+}
+
+}  // namespace
+
+BatchResult run_batch(const std::string& manifest, const std::optional<std::string>& checkpoint, bool progress) {
+  Mpi mpi;
+  BatchResult result;
+  result.printer = mpi.rank == 0;
+  std::exception_ptr error;
+  Batch b;
+  std::vector<std::string> mine;  // this rank's blocks, as text, in unit order
+  long loaded = 0;
+  try {
+    b = prepare(manifest);
+    if (checkpoint) std::filesystem::create_directories(*checkpoint);
+    Progress report("bounce fit --batch", progress && mpi.rank == 0);
+    for (const Unit& u : b.units) {
+      if (static_cast<int>(u.index % static_cast<std::size_t>(mpi.size)) != mpi.rank) continue;
+      auto points = load(checkpoint, b.prints[u.entry], u);
+      const bool computed = !points;
+      loaded += computed ? 0 : 1;
+      if (computed) points = b.jobs[u.entry].integrate(u.first, u.count);
+      mine.push_back(serialise(b.prints[u.entry], u, *points));
+      if (computed && checkpoint) save(*checkpoint, u, mine.back());
+      report(u.index + 1, b.units.size());
+    }
+  } catch (...) {
+    error = std::current_exception();
+  }
+  const int failed = mpi.max(error ? code_of(error) : 0);
+  if (failed != 0) {
+    if (error && mpi.rank == 0) std::rethrow_exception(error);
+    if (mpi.rank == 0) throw NumericalError("the batch failed on another rank (its message is above)");
+    result.exit_code = failed;
+    return result;
+  }
+  loaded = mpi.sum(loaded);
+  if (checkpoint && mpi.rank == 0) {
+    std::cerr << fmt::format("bounce fit --batch: {} of {} blocks read from the checkpoint {}\n", loaded, b.units.size(),
+                             *checkpoint);
+  }
+#ifdef BOUNCE_HAVE_MPI
+  if (mpi.rank != 0) {
+    std::size_t k = 0;
+    for (const Unit& u : b.units) {
+      if (static_cast<int>(u.index % static_cast<std::size_t>(mpi.size)) == mpi.rank) mpi.send(mine[k++], static_cast<int>(u.index));
+    }
+    return result;
+  }
+#endif
+  // Rank 0: the blocks in order, then each fit finished.
+  std::vector<std::vector<analysis::GridPoint>> points(b.entries.size());
+  std::size_t k = 0;
+  for (const Unit& u : b.units) {
+    const int owner = static_cast<int>(u.index % static_cast<std::size_t>(mpi.size));
+    std::string text;
+#ifdef BOUNCE_HAVE_MPI
+    text = owner == 0 ? mine[k++] : mpi.receive(owner, static_cast<int>(u.index));
+#else
+    (void)owner;
+    text = mine[k++];
+#endif
+    auto block = deserialise(text, b.prints[u.entry], u);
+    if (!block) throw std::logic_error("a block arrived damaged");
+    points[u.entry].insert(points[u.entry].end(), block->begin(), block->end());
+  }
+  Value::List experiments;
+  for (std::size_t e = 0; e < b.entries.size(); ++e) {
+    Record r = b.jobs[e].finish(std::move(points[e]));
+    r.set("name", b.entries[e].name);
+    experiments.push_back(std::move(r));
+  }
+  result.record.set("manifest", manifest).set("experiments", Value(std::move(experiments)));
+  return result;
+}
+
+}  // namespace bounce::cli

@@ -1,0 +1,102 @@
+// The manifest of a batch of fits (docs/fitting.md): a TOML file with optional [defaults] and
+// one [[experiment]] table per experiment, keys named as the command line's options.
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "bounce/api/front_door.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
+
+namespace bounce::api {
+
+namespace {
+
+// A key's value as the front door takes it: text, a number, or a flag.
+ParameterValue value_of(const toml::node& node, const std::string& where) {
+  if (const auto* s = node.as_string()) return s->get();
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  if (const auto* f = node.as_floating_point()) return f->get();
+  if (const auto* b = node.as_boolean()) return b->get();
+  throw InvalidArgument(where, "(a table or an array)", "a string, a number or true/false");
+}
+
+Inputs inputs_of(const toml::table& table, const std::string& where, std::string* name, std::string* data) {
+  Inputs in;
+  for (const auto& [key, node] : table) {
+    const std::string k(key.str()), at = fmt::format("{}: {}", where, k);
+    if (k == "name" || k == "data") {
+      const auto* s = node.as_string();
+      if (s == nullptr || s->get().empty() || (k == "name" ? name : data) == nullptr) {
+        throw InvalidArgument(at, "(not a name)", k == "name" ? "a name for the experiment (in [[experiment]])"
+                                                              : "the data file's path (in [[experiment]])");
+      }
+      *(k == "name" ? name : data) = s->get();
+      continue;
+    }
+    in[k] = value_of(node, at);
+  }
+  return in;
+}
+
+analysis::Experiment read_data(const std::string& path, const std::string& where) {
+  std::error_code ec;
+  std::ifstream file(path);
+  std::stringstream text;
+  if (file && !std::filesystem::is_directory(path, ec)) text << file.rdbuf();
+  if (!file || file.bad() || std::filesystem::is_directory(path, ec)) {
+    throw InvalidArgument(where + ": data", path, "a readable CSV file (docs/fitting.md)");
+  }
+  return analysis::parse_experiment(text.str(), path);
+}
+
+}  // namespace
+
+std::vector<BatchEntry> read_fit_manifest(std::string_view text, const std::string& source, const std::string& directory) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    const auto& begin = e.source().begin;
+    throw InvalidArgument(fmt::format("{}:{}:{}", source, begin.line, begin.column), "(malformed TOML)",
+                          std::string(e.description()));
+  }
+  Inputs defaults;
+  for (const auto& [key, node] : root) {
+    if (key.str() == "experiment") continue;
+    if (key.str() != "defaults" || !node.is_table()) {
+      throw InvalidArgument(fmt::format("{}: {}", source, key.str()), "(unknown top-level key)",
+                            "a [defaults] table and [[experiment]] tables");
+    }
+    defaults = inputs_of(*node.as_table(), fmt::format("{}: defaults", source), nullptr, nullptr);
+  }
+  const toml::array* experiments = root["experiment"].as_array();
+  if (experiments == nullptr || experiments->empty()) {
+    throw InvalidArgument(source, "(no [[experiment]] tables)", "at least one [[experiment]] with its data file");
+  }
+  std::vector<BatchEntry> out;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < experiments->size(); ++i) {
+    const std::string where = fmt::format("{}: experiment {}", source, i + 1);
+    const toml::table* table = (*experiments)[i].as_table();
+    if (table == nullptr) throw InvalidArgument(where, "(not a table)", "an [[experiment]] table");
+    BatchEntry e;
+    std::string data;
+    e.inputs = defaults;
+    for (auto& [key, value] : inputs_of(*table, where, &e.name, &data)) e.inputs[key] = std::move(value);
+    if (e.name.empty()) e.name = fmt::format("experiment {}", i + 1);
+    if (!names.insert(e.name).second) throw InvalidArgument(where + ": name", e.name, "a name no other experiment has");
+    if (data.empty()) throw InvalidArgument(where + ": data", "(not given)", "the data file's path");
+    const std::filesystem::path given(data);
+    const std::filesystem::path path = given.is_absolute() ? given : std::filesystem::path(directory) / given;
+    e.data = read_data(path.string(), where);
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+}  // namespace bounce::api
