@@ -4,7 +4,7 @@
 // Input: the text of a data file. Properties (docs/hardening.md):
 //  * parse_experiment returns or throws InvalidArgument (nothing else: the CLI would exit 4);
 //  * what it accepts is what docs/fitting.md allows: at least one row, velocity > 0 and
-//    finite, 0 <= cor <= 1.5, stuck exactly for cor = 0, 1e-6 <= cor_error <= 1.5, line
+//    finite, 0 <= cor <= 1, stuck exactly for cor = 0, 1e-6 <= cor_error <= 1.5, line
 //    numbers increasing;
 //  * the residual sums of a fit are finite for any model e in [0, 1].
 #include <cmath>
@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::size_t line = 0;
   for (const auto& m : e->points) {
     if (!(m.velocity > 0.0) || !std::isfinite(m.velocity)) finding("a velocity outside (0, inf) was accepted");
-    if (!(m.cor >= 0.0 && m.cor <= 1.5)) finding("a cor outside [0, 1.5] was accepted");
+    if (!(m.cor >= 0.0 && m.cor <= 1.0)) finding("a cor outside [0, 1] was accepted");
     if (m.stuck != (m.cor == 0.0)) finding("stuck disagrees with cor = 0");
     if (m.cor_error && !(*m.cor_error >= 1e-6 && *m.cor_error <= 1.5)) finding("a cor_error outside [1e-6, 1.5]");
     if (m.line <= line) finding("line numbers do not increase");

@@ -195,6 +195,61 @@ def figures_section(runner: Runner, build_dir: pathlib.Path, out: pathlib.Path) 
     return lines
 
 
+def fit_section(runner: Runner, build_dir: pathlib.Path, out: pathlib.Path) -> list[str]:
+    """K13 §4 on the synthetic data sets: one fit with its figures, the model comparison, the
+    Bridges law's A and g*, and the batch of every set (K13 Figs 7 and 8)."""
+    sys.path.insert(0, str(build_dir / "python"))
+    import bounce
+    from bounce import plot
+
+    data = pathlib.Path("data/experiments")
+    runner.progress("fit: K13's model to synthetic PSL-on-quartz data (60 x 60 x 100 grid) and the comparison")
+    psl = ["--material", "psl", "--radius", "0.635e-6", "--wall", "--material2", "quartz"]
+    fit = runner.json("fit", "--data", str(data / "synthetic-psl-quartz.csv"), *psl, "--compare")
+    pair = bounce.Pair(material="psl", radius=0.635e-6, wall=True, material2="quartz")
+    grid = bounce.fit(pair, bounce.Model("krijt"), data=str(data / "synthetic-psl-quartz.csv"))
+    figures = out / "figures"
+    figures.mkdir(parents=True, exist_ok=True)
+    for name, ax in (("fit-psl-quartz", plot.fit_curve(grid)), ("fit-chi2-psl-quartz", plot.chi2_map(grid))):
+        for suffix in ("png", "svg"):
+            ax.figure.savefig(figures / f"{name}.{suffix}", dpi=150)
+
+    def show(f: dict, key: str) -> str:
+        parts = []
+        for name in f["fitted"]:
+            lo, hi = f[key][name]
+            parts.append(f"{name} = {f['best'][name]:.3g} ({'?' if lo is None else f'{lo:.3g}'} .. "
+                         f"{'?' if hi is None else f'{hi:.3g}'})")
+        return ", ".join(parts)
+
+    lines = ["## Fitting restitution curves (K13 §4; docs/fitting.md)", "",
+             "Synthetic data (`data/experiments/`, made by `tools/make_synthetic_data.py` from bounce's own model with "
+             "stated parameters and noise; not measurements).", "",
+             f"* PSL on quartz (true gamma = 0.05 J/m^2, T_vis = 3e-12 s, Y = 2e8 Pa, sigma = 0.02): "
+             f"{show(fit, 'ranges')}; chi^2 (31) = {fit['chi2']:.3g} "
+             f"(`figures/fit-psl-quartz.png`, `figures/fit-chi2-psl-quartz.png`).", "",
+             "| model | chi^2 (31) | AIC | BIC |", "|---|---|---|---|"]
+    for row in fit["comparison"]:
+        lines.append(f"| {row['label']} | {row['chi2']:.3g} | {row['aic']:.4g} | {row['bic']:.4g} |")
+    runner.progress("fit: the viscoelastic A of Bridges et al.'s ice law (BSHP96 Fig 1, BP04 Fig 8.2)")
+    ice = runner.json("fit", "--data", str(data / "bridges-ice.csv"), "--material", "ice-bshp96", "--radius", "1e-2",
+                      "--model", "viscoelastic")
+    lines += ["", f"* Bridges et al.'s ice law, 0.05-5 cm/s, two 1 cm ice spheres: {show(ice, 'ranges')} s, "
+              f"g* = {ice['characteristic_velocity'] * 100:.3g} cm/s (BP04: 0.32 cm/s from the Pade form and the "
+              "measurements; docs/fitting.md says why they differ).", ""]
+    runner.progress("fit: the batch of every synthetic set (K13 Figs 7, 8)")
+    batch = runner.json("fit", "--batch", str(data / "synthetic.toml"))
+    fig = plot.batch_summary(batch)
+    for suffix in ("png", "svg"):
+        fig.savefig(figures / f"fit-batch.{suffix}", dpi=150)
+    lines += ["| experiment | fitted (factor-2 ranges; ? = one-sided) |", "|---|---|"]
+    for f in batch["experiments"]:
+        lines.append(f"| {f['name']} | {show(f, 'ranges')} |")
+    lines += ["", "`figures/fit-batch.png`: gamma/gamma_L, Y/E_soft and T_vis against the reduced radius, as K13 "
+              "Figs 7 and 8.", ""]
+    return lines
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--build-dir", default="build")
@@ -213,6 +268,7 @@ def main() -> None:
     (out / "jkr-force-overlap.csv").write_text(
         runner.run("contact", *PAIR, "--law", "jkr", "--csv", "--contact-radii", "0:1.5e-7:301"))
     report += figures_section(runner, build_dir, out)
+    report += fit_section(runner, build_dir, out)
     (out / "report.md").write_text("\n".join(report))
     runner.progress(f"wrote {out / 'report.md'}, the figures under {out / 'figures'}/ and the CSV files under {out}/")
 

@@ -73,3 +73,59 @@ def chi2_map(result: dict, x: str = "gamma", y: str = "tvis", ax: Axes | None = 
     ax.set_ylabel(y)
     ax.legend(fontsize=7, loc="upper right")
     return ax
+
+
+def _normalised_range(fit: dict, name: str, scale: float) -> tuple[float, float | None, float | None]:
+    lo, hi = fit["ranges"][name]
+    return fit["best"][name] / scale, (lo / scale if lo is not None else None), (hi / scale if hi is not None else None)
+
+
+def _interval_plot(ax: Axes, rows: list[tuple[float, float | None, float | None]], labels: list[str], xlabel: str) -> None:
+    """Best values with their ranges; an open end is an arrow (K13 Fig 7's grey arrows)."""
+    for i, (best, lo, hi) in enumerate(rows):
+        left = lo if lo is not None else best / 3.0
+        right = hi if hi is not None else best * 3.0
+        ax.plot([left, right], [i, i], color="k", lw=1.2)
+        ax.plot(best, i, "o", color="C3", ms=5)
+        for end, open_end, direction in ((left, lo is None, -1), (right, hi is None, 1)):
+            if open_end:
+                ax.annotate("", xy=(end * (1.8 if direction > 0 else 1 / 1.8), i), xytext=(end, i),
+                            arrowprops=dict(arrowstyle="->", color="0.5", lw=1.5))
+    ax.set_yticks(range(len(rows)), labels, fontsize=7)
+    ax.invert_yaxis()
+    ax.set_xscale("log")
+    ax.set_xlabel(xlabel)
+
+
+def batch_summary(batch: dict) -> Figure:
+    """K13 Figs 7 and 8 for a batch (the JSON of ``bounce fit --batch --json``): gamma / gamma_L
+    and Y / E_soft per experiment with their ranges (arrows: one-sided limits), ordered from the
+    smallest reduced radius (top) to the largest, and T_vis against the reduced radius.
+    """
+    fits = sorted(batch["experiments"], key=lambda f: f["scales"]["effective_radius"])
+    fig = Figure(figsize=(10.5, 0.3 * len(fits) + 3.2), layout="constrained")
+    axes = fig.subplots(1, 3)
+    gamma = [f for f in fits if "gamma" in f["best"] and f["scales"]["gamma_L"] is not None]
+    if gamma:
+        _interval_plot(axes[0], [_normalised_range(f, "gamma", f["scales"]["gamma_L"]) for f in gamma],
+                       [f["name"] for f in gamma], r"$\gamma / \gamma_L$ (K13 Fig 7a)")
+        axes[0].axvline(1.0, color="0.7", lw=1)
+    yields = [f for f in fits if "yield" in f["best"]]
+    if yields:
+        _interval_plot(axes[1], [_normalised_range(f, "yield", f["scales"]["E_soft"]) for f in yields],
+                       [f["name"] for f in yields], r"$Y / E_{soft}$ (K13 Fig 7b)")
+    tvis = [f for f in fits if "tvis" in f["best"]]
+    for f in tvis:
+        r, (best, lo, hi) = f["scales"]["effective_radius"], _normalised_range(f, "tvis", 1.0)
+        low = best - lo if lo is not None else best * 0.67
+        high = hi - best if hi is not None else best * 2.0
+        axes[2].errorbar([r], [best], yerr=[[low], [high]], fmt="o", color="C0", capsize=2,
+                         lolims=hi is None, uplims=lo is None)
+    axes[2].set_xscale("log")
+    axes[2].set_yscale("log")
+    axes[2].set_xlabel("reduced radius $R$ [m]")
+    axes[2].set_ylabel(r"$T_{vis}$ [s] (K13 Fig 8b)")
+    for ax, shown in zip(axes, (gamma, yields, tvis)):
+        if not shown:
+            ax.set_axis_off()
+    return fig

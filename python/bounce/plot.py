@@ -23,7 +23,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from . import _bounce as b
-from .fit_plots import chi2_map, fit_curve  # noqa: F401  (K13 Fig 6 and the chi^2 landscape of a fit)
+from .fit_plots import batch_summary, chi2_map, fit_curve  # noqa: F401  (K13 Figs 6, 7, 8 and a fit's chi^2)
 
 # --- the set-ups of the papers ---------------------------------------------------------
 

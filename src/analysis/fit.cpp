@@ -154,8 +154,14 @@ std::size_t product(const std::vector<FitAxis>& axes) {
 }
 
 void check_problem(const FitProblem& p) {
-  if (p.data.points.empty()) throw InvalidArgument("data", "(no data)", "at least one measurement");
   if (p.collision_axes.empty() && !p.yield_axis) throw InvalidArgument("fit", "(nothing)", "at least one parameter to fit");
+  const std::size_t k = p.collision_axes.size() + (p.yield_axis ? 1 : 0);
+  if (p.data.points.size() < k) {
+    throw InvalidArgument("data", p.data.source,
+                          fmt::format("at least as many measurements as fitted parameters ({} measurements, {} "
+                                      "parameters)",
+                                      p.data.points.size(), k));
+  }
   std::vector<FitAxis> all = p.collision_axes;
   if (p.yield_axis) all.push_back(*p.yield_axis);
   for (const FitAxis& a : all) {
@@ -343,8 +349,9 @@ FitResult finish(const FitProblem& p, const Evaluator& ev, std::vector<GridPoint
   r.collisions = r.grid_collisions + (ev.collisions() - before);
   if (p.keep_grid) r.chi2_grid = std::move(g.chi2);
   warn_about_edges(r, r.best, r.profiles);
-  if (p.data.points.size() <= r.names.size()) {
-    r.warnings.push_back(fmt::format("{} measurements for {} parameters: the fit is not constrained",
+  if (p.data.points.size() == r.names.size()) {
+    r.warnings.push_back(fmt::format("{} measurements for {} parameters: the fit passes through every point and "
+                                     "says nothing of the model",
                                      p.data.points.size(), r.names.size()));
   }
   return r;

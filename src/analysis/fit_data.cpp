@@ -15,9 +15,12 @@ namespace bounce::analysis {
 
 namespace {
 
-// A measured COR above 1 is scatter on a nearly elastic bounce; one above 1.5 is not a
-// restitution measurement (a column mix-up, a percentage): refused.
-constexpr double max_cor = 1.5;
+// e > 1 would be a collision that creates energy: no model here can reach it, and K13's
+// chi^2 would weigh it against e <= 1 alone. Scatter above 1 is the experimenter's to clip
+// or drop (docs/fitting.md).
+constexpr double max_cor = 1.0;
+// An error bar of the COR above 1.5 is not a measurement (a column mix-up, a percentage).
+constexpr double max_cor_error = 1.5;
 constexpr double min_cor_error = 1e-6;
 // A million measurements is beyond any experiment; more is a wrong file.
 constexpr std::size_t max_points = 1'000'000;
@@ -102,9 +105,10 @@ class Reader {
       m.cor_error = number(2);
       // Below 1e-6 no COR is measured; the bound keeps ((e - e_m) / sigma)^2 summed over
       // 1e6 rows below 1e19 (an error of 1e-300 made the proper chi^2 infinite).
-      if (!(*m.cor_error >= min_cor_error && *m.cor_error <= max_cor)) {
+      if (!(*m.cor_error >= min_cor_error && *m.cor_error <= max_cor_error)) {
         refuse(line, "cor_error", field(2),
-               fmt::format("an error of the COR {} <= cor_error <= {} (the column is optional)", min_cor_error, max_cor));
+               fmt::format("an error of the COR {} <= cor_error <= {} (the column is optional)", min_cor_error,
+                           max_cor_error));
       }
     }
     if (index_[3] >= 0) {

@@ -10,6 +10,7 @@ import pytest
 import bounce
 import bounce.plot
 
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 ICE = dict(material="ice-bshp96", radius=1e-2)
 GRID = {"A": (1e-8, 1e-4, 13)}
 
@@ -37,7 +38,7 @@ def test_equals_the_cli_on_a_file(tmp_path):
     path = tmp_path / "d.csv"
     path.write_text("velocity,cor,cor_error\n" + "".join(f"{x!r},{y!r},0.01\n" for x, y in zip(v, e)))
     py = bounce.fit(bounce.Pair(**ICE), bounce.Model("viscoelastic"), data=str(path), grid=GRID, fit="A,yield_strength")
-    cli = os.environ.get("BOUNCE_CLI", "build/bin/bounce")
+    cli = os.environ.get("BOUNCE_CLI", os.path.join(ROOT, "build", "bin", "bounce"))
     out = subprocess.run([cli, "fit", "--data", str(path), "--material", "ice-bshp96", "--radius", "1e-2", "--model",
                           "viscoelastic", "--grid", "A=1e-8:1e-4:13", "--fit", "A,yield", "--json"],
                          check=True, capture_output=True, text=True).stdout
@@ -82,3 +83,24 @@ def test_plots_of_a_fit():
     assert ax.get_xlabel() == "A"
     with pytest.raises(ValueError, match="gamma = \\(not fitted\\) is invalid"):
         bounce.plot.chi2_map(r, "gamma", "A")
+
+
+def test_batch_summary_plots_k13_figs_7_and_8(tmp_path):
+    for name in ("synthetic-psl-quartz.csv", "synthetic-agglass-steel.csv"):
+        (tmp_path / name).write_text(open(os.path.join(ROOT, "data", "experiments", name)).read())
+    (tmp_path / "m.toml").write_text(
+        '[defaults]\nmodel = "krijt"\n'
+        '[[experiment]]\nname = "psl"\ndata = "synthetic-psl-quartz.csv"\nmaterial = "psl"\nradius = 0.635e-6\n'
+        'wall = true\nmaterial2 = "quartz"\ngrid = "gamma=0.01:0.2:6,tvis=1e-13:1e-10:6,yield=1e7:1e10:20"\n'
+        '[[experiment]]\nname = "agglass"\ndata = "synthetic-agglass-steel.csv"\nmaterial = "ag-coated-glass"\n'
+        'radius = 4.3e-6\nwall = true\nmaterial2 = "steel"\ngrid = "gamma=0.1:4:6,tvis=1e-12:1e-9:6,yield=1e8:1e11:20"\n')
+    cli = os.environ.get("BOUNCE_CLI", os.path.join(ROOT, "build", "bin", "bounce"))
+    batch = json.loads(subprocess.run([cli, "fit", "--batch", str(tmp_path / "m.toml"), "--json"], check=True,
+                                      capture_output=True, text=True).stdout)
+    assert [f["name"] for f in batch["experiments"]] == ["psl", "agglass"]
+    for f in batch["experiments"]:
+        assert f["scales"]["effective_radius"] > 0 and f["scales"]["plastic_length_scale"] > 0
+    fig = bounce.plot.batch_summary(batch)
+    gamma_axes, yield_axes, tvis_axes = fig.axes[:3]
+    assert len(gamma_axes.get_yticks()) == 2
+    assert tvis_axes.get_xscale() == "log"

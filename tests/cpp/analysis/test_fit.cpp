@@ -87,6 +87,7 @@ TEST(FitData, RefusesMalformedFilesNamingTheLine) {
   expect_refused_at("velocity,cor\n-1,0.5\n", "f.csv:2: velocity");
   expect_refused_at("velocity,cor\nnan,0.5\n", "f.csv:2: velocity");
   expect_refused_at("velocity,cor\n1,2\n", "f.csv:2: cor");
+  expect_refused_at("velocity,cor\n1,1.0001\n", "f.csv:2: cor");
   expect_refused_at("velocity,cor\n1,-0.1\n", "f.csv:2: cor");
   expect_refused_at("velocity,cor,cor_error\n1,0.5,0\n", "f.csv:2: cor_error");
   expect_refused_at("velocity,cor,cor_error\n1,0.5,1e-300\n", "f.csv:2: cor_error");

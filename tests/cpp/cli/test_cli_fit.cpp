@@ -78,6 +78,14 @@ TEST(CliFit, BadInputIsRefusedByTheOneRule) {
   expect_rejected(fit(fast, {}), fast + ":2: velocity", "1e+05");
   const std::string empty = write_file("bounce_fit_empty.csv", "# nothing\nvelocity,cor\n");
   expect_rejected(fit(empty, {}), "--data", empty);
+  const std::string one = write_file("bounce_fit_one.csv", "velocity,cor\n0.1,0.5\n");
+  expect_rejected(fit(one, {"--fit", "A,yield"}), "--data", one);  // fewer points than parameters
+  const std::string above = write_file("bounce_fit_above.csv", "velocity,cor\n0.1,0.5\n1,1.01\n");
+  expect_rejected(fit(above, {}), above + ":3: cor", "1.01");
+  const std::string unknown = write_file("bounce_fit_unknown.csv", "velocity,cor,angle\n0.1,0.5,3\n");
+  expect_rejected(fit(unknown, {}), unknown + ":1: header", "angle");
+  const std::string missing = write_file("bounce_fit_missing.csv", "velocity\n0.1\n");
+  expect_rejected(fit(missing, {}), missing + ":1: header", "velocity");
   expect_rejected(fit(good, {"--fit", "A,gamma"}), "--fit", "A,gamma");
   expect_rejected(fit(good, {"--fit", "A,A"}), "--fit", "A,A");
   expect_rejected(fit(good, {"--grid", "A=1e-3:1e-6:5"}), "--grid", "A=1e-3:1e-6:5");

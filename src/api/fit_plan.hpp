@@ -1,0 +1,33 @@
+#pragma once
+// Private: a fit's plan (fit_plan.cpp), shared by the front door's fit and its comparison.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "binding.hpp"
+#include "bounce/analysis/fit.hpp"
+
+namespace bounce::api::detail {
+
+// What a fit's inputs say: the model, the fitted parameters and their grids, the fixed inputs.
+struct Plan {
+  std::string model;
+  std::vector<ParameterSpec> fitted;  // collision parameters first, yield last
+  std::vector<analysis::FitAxis> axes;
+  Inputs fixed;   // the user's inputs without the fit command's own
+  std::optional<Pair> pair;  // the pair as given (gamma_L, E_soft, the speeds it takes)
+  std::optional<double> gamma_l;
+  double e_soft = 0.0;
+};
+
+/// The plan of bound inputs for `model` (InvalidArgument for a parameter that cannot be
+/// fitted, a grid out of its declared range, a fixed value of a fitted parameter).
+Plan make_plan(const Bound& bound, const Inputs& inputs, const std::string& model);
+/// A trial's inputs: the fixed ones with the fitted collision values set (gamma: both bodies').
+Inputs trial_inputs(const Plan& plan, std::span<const double> values);
+/// "a,b,c" split at `separator`.
+std::vector<std::string> split(const std::string& text, char separator);
+
+}  // namespace bounce::api::detail
