@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.ticker import NullFormatter
 
 
 def _axes(ax: Axes | None) -> Axes:
@@ -92,8 +93,11 @@ def _interval_plot(ax: Axes, rows: list[tuple[float, float | None, float | None]
                 ax.annotate("", xy=(end * (1.8 if direction > 0 else 1 / 1.8), i), xytext=(end, i),
                             arrowprops=dict(arrowstyle="->", color="0.5", lw=1.5))
     ax.set_yticks(range(len(rows)), labels, fontsize=7)
-    ax.invert_yaxis()
+    ax.set_ylim(len(rows) - 0.5, -0.5)
     ax.set_xscale("log")
+    ends = [x for best, lo, hi in rows for x in (best, lo if lo is not None else best / 6, hi if hi is not None else best * 6)]
+    ax.set_xlim(min(ends) / 1.5, max(ends) * 1.5)  # the arrows' tips inside
+    ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel(xlabel)
 
 
@@ -115,12 +119,21 @@ def batch_summary(batch: dict) -> Figure:
         _interval_plot(axes[1], [_normalised_range(f, "yield", f["scales"]["E_soft"]) for f in yields],
                        [f["name"] for f in yields], r"$Y / E_{soft}$ (K13 Fig 7b)")
     tvis = [f for f in fits if "tvis" in f["best"]]
+    values = []
     for f in tvis:
         r, (best, lo, hi) = f["scales"]["effective_radius"], _normalised_range(f, "tvis", 1.0)
-        low = best - lo if lo is not None else best * 0.67
-        high = hi - best if hi is not None else best * 2.0
-        axes[2].errorbar([r], [best], yerr=[[low], [high]], fmt="o", color="C0", capsize=2,
-                         lolims=hi is None, uplims=lo is None)
+        bottom, top = (lo if lo is not None else best / 3.0), (hi if hi is not None else best * 3.0)
+        axes[2].plot([r, r], [bottom, top], color="C0", lw=1.2)
+        axes[2].plot(r, best, "o", color="C0")
+        for end, open_end, factor in ((bottom, lo is None, 1 / 1.8), (top, hi is None, 1.8)):
+            if open_end:
+                axes[2].annotate("", xy=(r, end * factor), xytext=(r, end),
+                                 arrowprops=dict(arrowstyle="->", color="0.5", lw=1.5))
+        values += [bottom / 2.0, top * 2.0, r]
+    if tvis:
+        radii = [f["scales"]["effective_radius"] for f in tvis]
+        axes[2].set_xlim(min(radii) / 3.0, max(radii) * 3.0)
+        axes[2].set_ylim(min(values[0::3]), max(values[1::3]))
     axes[2].set_xscale("log")
     axes[2].set_yscale("log")
     axes[2].set_xlabel("reduced radius $R$ [m]")

@@ -286,9 +286,42 @@ FitMinimum grid_minimum(const FitProblem& p, const std::vector<double>& chi2) {
   return m;
 }
 
-std::vector<ParameterRange> ranges(const std::vector<Profile>& prof, const FitMinimum& best, double threshold) {
+// The yield strength's profile: the grid's, and where lower the slice through the refined
+// minimum (its collision values held: no collisions beyond one set of e_A), which follows
+// the minimum between the coarse values of the collision axes.
+Profile yield_profile(const Evaluator& ev, const Profile& grid, const FitMinimum& best, bool weighted) {
+  const FitProblem& p = ev.problem();
+  Profile out = grid;
+  PlasticScales scales;
+  std::string failure;
+  const auto e_a = ev.adhesive(std::span(best.values).first(p.collision_axes.size()), p.threads, scales, failure);
+  if (!e_a) return out;
+  std::vector<double> cor(p.data.points.size());
+  for (std::size_t j = 0; j < out.values.size(); ++j) {
+    ev.model_cor(scales, *e_a, out.values[j], cor);
+    out.chi2[j] = std::min(out.chi2[j], ev.objective(cor, weighted));
+  }
+  return out;
+}
+
+// The ranges where chi^2 <= threshold. Refined: each parameter by its own profile near the
+// minimum (detail::refined_range: the others re-optimised), or, with Y alone fitted, its
+// exact profile on its grid (yield_profile). On the grid alone (no refinement): the grid's
+// profiles, interpolated.
+std::vector<ParameterRange> ranges(const Evaluator& ev, const std::vector<Profile>& prof, const FitMinimum& best,
+                                   double threshold, bool weighted) {
+  const FitProblem& p = ev.problem();
   std::vector<ParameterRange> out;
-  for (std::size_t a = 0; a < prof.size(); ++a) out.push_back(profile_range(prof[a], best.values[a], best.chi2, threshold));
+  for (std::size_t a = 0; a < prof.size(); ++a) {
+    const bool yield = a == p.collision_axes.size();
+    if (!p.refine) {
+      out.push_back(profile_range(prof[a], best.values[a], best.chi2, threshold));
+    } else if (yield && p.collision_axes.empty()) {
+      out.push_back(profile_range(yield_profile(ev, prof[a], best, weighted), best.values[a], best.chi2, threshold));
+    } else {
+      out.push_back(detail::refined_range(ev, best, a, threshold, weighted));
+    }
+  }
   return out;
 }
 
@@ -337,13 +370,13 @@ FitResult finish(const FitProblem& p, const Evaluator& ev, std::vector<GridPoint
     r.cor.assign(p.data.points.size(), 0.0);
     ev.model_cor(scales, *e_a, p.yield_axis ? std::optional(r.best.values.back()) : std::nullopt, r.cor);
   }
-  r.ranges = ranges(r.profiles, r.best, 2.0 * r.best.chi2);  // K13 §4.1: within a factor 2
+  r.ranges = ranges(ev, r.profiles, r.best, 2.0 * r.best.chi2, false);  // K13 §4.1: within a factor 2
   if (p.data.has_errors()) {
     r.weighted_profiles = profiles(p, g.weighted);
     const FitMinimum start = grid_minimum(p, g.weighted);
     std::vector<double> unused;
     r.weighted_best = p.refine ? detail::refine(ev, start, true, unused) : start;
-    r.intervals = ranges(r.weighted_profiles, *r.weighted_best, r.weighted_best->chi2 + 1.0);  // Delta chi^2 = 1
+    r.intervals = ranges(ev, r.weighted_profiles, *r.weighted_best, r.weighted_best->chi2 + 1.0, true);  // Delta chi^2 = 1
   }
   r.refine_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - refine_start).count();
   r.collisions = r.grid_collisions + (ev.collisions() - before);

@@ -57,7 +57,15 @@ class Evaluator {
 FitMinimum best_yield(const Evaluator& evaluator, const PlasticScales& scales, std::span<const double> e_a,
                       const FitAxis& yield, bool weighted);
 
-/// A start of the refinement: collision values (the yield's comes from best_yield).
+/// The grid's minimum refined: Nelder-Mead over the collision axes from `start` (the yield's
+/// value comes from best_yield for every trial).
 FitMinimum refine(const Evaluator& evaluator, const FitMinimum& start, bool weighted, std::vector<double>& cor_at_best);
+
+/// The range of collision axis `axis` where its profile chi^2 (the other collision axes
+/// re-optimised, the yield strength at its best) stays <= threshold around the refined
+/// minimum `best`: stepping out from it (a quarter grid step, doubling) and bisecting the
+/// crossing; an end is none where the region reaches the grid's edge.
+ParameterRange refined_range(const Evaluator& evaluator, const FitMinimum& best, std::size_t axis, double threshold,
+                             bool weighted);
 
 }  // namespace bounce::analysis::detail
