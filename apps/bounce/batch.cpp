@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "bounce/api/front_door.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "output.hpp"
 
@@ -198,15 +199,9 @@ struct Batch {
 };
 
 Batch prepare(const std::string& manifest) {
-  std::ifstream file(manifest);
-  std::stringstream text;
-  std::error_code ec;
-  if (file && !std::filesystem::is_directory(manifest, ec)) text << file.rdbuf();
-  if (manifest.empty() || !file || std::filesystem::is_directory(manifest, ec)) {
-    throw InvalidArgument("batch", manifest.empty() ? "\"\"" : manifest, "a readable TOML manifest (docs/fitting.md)");
-  }
+  const std::string text = read_text_file("batch", manifest, "a readable TOML manifest (docs/fitting.md)");
   Batch b;
-  b.entries = api::read_fit_manifest(text.str(), manifest, std::filesystem::path(manifest).parent_path().string());
+  b.entries = api::read_fit_manifest(text, manifest, std::filesystem::path(manifest).parent_path().string());
   for (std::size_t e = 0; e < b.entries.size(); ++e) {
     try {
       b.jobs.emplace_back(b.entries[e].inputs, b.entries[e].data);

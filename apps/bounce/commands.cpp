@@ -2,14 +2,12 @@
 // (JSON, CSV or text). The physics and every check are in the library.
 #include "commands.hpp"
 
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <iterator>
-#include <sstream>
 
 #include <fmt/format.h>
 
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "batch.hpp"
 #include "output.hpp"
@@ -38,14 +36,7 @@ void one_format(const Options& o, std::initializer_list<const char*> formats) {
 
 std::string read_file(const std::string& option, const std::string& path, const std::string& what) {
   if (path == "-") return {std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
-  std::error_code ec;
-  if (path.empty()) throw InvalidArgument(option, "\"\"", what);
-  if (std::filesystem::is_directory(path, ec)) throw InvalidArgument(option, path, what + ", not a directory");
-  std::ifstream file(path);
-  std::stringstream text;
-  if (file) text << file.rdbuf();
-  if (!file || file.bad()) throw InvalidArgument(option, path, what);
-  return text.str();
+  return read_text_file(option, path, what);
 }
 
 using Setup = std::function<std::function<int()>(Options&)>;

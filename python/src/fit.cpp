@@ -1,13 +1,12 @@
 // fit: a model fitted to a restitution curve (docs/fitting.md) through the front door, the
 // data read by the library's own reader (from a file, or from arrays written as its CSV).
-#include <fstream>
 #include <regex>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <pybind11/stl.h>
 
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "objects.hpp"
 
@@ -53,11 +52,7 @@ analysis::Experiment from_arrays(const py::object& velocity, const py::object& c
 }
 
 analysis::Experiment from_file(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  if (file) text << file.rdbuf();
-  if (!file || file.bad() || path.empty()) throw InvalidArgument("data", path, "a readable CSV file (docs/fitting.md)");
-  return analysis::parse_experiment(text.str(), path);
+  return analysis::parse_experiment(read_text_file("data", path, "a readable CSV file (docs/fitting.md)"), path);
 }
 
 // fit=("gamma", "tvis") or "gamma,tvis"; grid={"gamma": (lo, hi, n)}: the front door's text.

@@ -1,9 +1,7 @@
 // The manifest of a batch of fits (docs/fitting.md): a TOML file with optional [defaults] and
 // one [[experiment]] table per experiment, keys named as the command line's options.
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -44,14 +42,7 @@ Inputs inputs_of(const toml::table& table, const std::string& where, std::string
 }
 
 analysis::Experiment read_data(const std::string& path, const std::string& where) {
-  std::error_code ec;
-  std::ifstream file(path);
-  std::stringstream text;
-  if (file && !std::filesystem::is_directory(path, ec)) text << file.rdbuf();
-  if (!file || file.bad() || std::filesystem::is_directory(path, ec)) {
-    throw InvalidArgument(where + ": data", path, "a readable CSV file (docs/fitting.md)");
-  }
-  return analysis::parse_experiment(text.str(), path);
+  return analysis::parse_experiment(read_text_file(where + ": data", path, "a readable CSV file (docs/fitting.md)"), path);
 }
 
 }  // namespace

@@ -2,6 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <regex>
 #include <fmt/format.h>
 
@@ -67,6 +70,18 @@ double require_open_interval(std::string_view parameter, double value, double lo
                           fmt::format("{} < {} < {}", format_value(lo), what, format_value(hi)));
   }
   return value;
+}
+
+std::string read_text_file(std::string_view parameter, const std::string& path, std::string_view what) {
+  const std::string name(parameter), allowed(what);
+  std::error_code ec;
+  if (path.empty()) throw InvalidArgument(name, "\"\"", allowed);
+  if (std::filesystem::is_directory(path, ec)) throw InvalidArgument(name, path, allowed + ", not a directory");
+  std::ifstream file(path);
+  std::ostringstream text;
+  if (file) text << file.rdbuf();
+  if (!file || file.bad()) throw InvalidArgument(name, path, allowed);
+  return text.str();
 }
 
 }  // namespace bounce

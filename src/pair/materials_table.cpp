@@ -1,13 +1,12 @@
 #include "bounce/pair/materials_table.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 
 namespace bounce {
@@ -135,16 +134,7 @@ MaterialTable MaterialTable::from_toml(std::string_view text, std::string_view o
 }
 
 MaterialTable MaterialTable::from_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (path.empty()) throw InvalidArgument("materials_file", "\"\"", "the path of a readable TOML file");
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InvalidArgument("materials_file", path.string(), "a readable TOML file, not a directory");
-  }
-  std::ifstream in(path);
-  if (!in) throw InvalidArgument("materials_file", path.string(), "a readable TOML file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return from_toml(text.str(), path.string());
+  return from_toml(read_text_file("materials_file", path.string(), "a readable TOML file"), path.string());
 }
 
 const MaterialTable& MaterialTable::builtin() {

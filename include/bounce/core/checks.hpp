@@ -33,6 +33,11 @@ double require_at_least(std::string_view parameter, double value, double lowest,
 double require_open_interval(std::string_view parameter, double value, double lo, double hi,
                              std::string_view what);
 
+/// The whole text of the file at `path` (a data file, a manifest, a materials table); an
+/// empty path, a directory or a file that cannot be read is InvalidArgument(parameter, path,
+/// what), with ", not a directory" for a directory.
+std::string read_text_file(std::string_view parameter, const std::string& path, std::string_view what);
+
 /// "a, b, c": the names allowed, for a message.
 std::string one_of(const std::vector<std::string>& names);
 
