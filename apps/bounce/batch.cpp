@@ -203,13 +203,14 @@ Batch prepare(const std::string& manifest) {
   Batch b;
   b.entries = api::read_fit_manifest(text, manifest, std::filesystem::path(manifest).parent_path().string());
   for (std::size_t e = 0; e < b.entries.size(); ++e) {
+    std::size_t n = 0;
     try {
       b.jobs.emplace_back(b.entries[e].inputs, b.entries[e].data);
+      n = b.jobs.back().grid_points();
     } catch (const InvalidArgument& error) {
       throw error.renamed(fmt::format("{}: {}: {}", manifest, b.entries[e].name, error.parameter()));
     }
     b.prints.push_back(fingerprint(b.entries[e], b.jobs.back()));
-    const std::size_t n = b.jobs.back().grid_points();
     for (std::size_t first = 0; first < n; first += block_size) {
       b.units.push_back({e, first, std::min(block_size, n - first), b.units.size()});
     }

@@ -172,6 +172,16 @@ void check_problem(const FitProblem& p) {
       }
     }
   }
+  // A million grid points of the collision axes are 3e7 collisions against 30 speeds (about
+  // two hours on two cores); 1e8 chi^2 values are 800 MB. Beyond either, a grid is a typo.
+  constexpr double max_collision_points = 1e6, max_values = 1e8;
+  double points = 1.0;
+  for (const FitAxis& a : p.collision_axes) points *= static_cast<double>(a.values.size());
+  const double values = points * (p.yield_axis ? static_cast<double>(p.yield_axis->values.size()) : 1.0);
+  if (points > max_collision_points || values > max_values) {
+    throw InvalidArgument("grid", fmt::format("{:.3g} points ({:.3g} with the yield axis)", points, values),
+                          "at most 1e6 points of the collision parameters and 1e8 in all");
+  }
   if (!(p.precision > 0.0 && p.precision < 1.0)) {
     throw InvalidArgument("precision", fmt::format("{}", p.precision), "0 < precision < 1");
   }
@@ -392,7 +402,10 @@ FitResult finish(const FitProblem& p, const Evaluator& ev, std::vector<GridPoint
 
 }  // namespace
 
-std::size_t grid_point_count(const FitProblem& p) { return product(p.collision_axes); }
+std::size_t grid_point_count(const FitProblem& p) {
+  check_problem(p);  // a batch counts its blocks first: a grid too large is refused here
+  return product(p.collision_axes);
+}
 
 std::vector<GridPoint> integrate_grid_points(const FitProblem& p, std::size_t first, std::size_t count) {
   check_problem(p);

@@ -92,6 +92,11 @@ TEST(CliFit, BadInputIsRefusedByTheOneRule) {
   expect_rejected(fit(good, {"--grid", "A=0:1:5"}), "--grid", "A=0:1:5");
   expect_rejected(fit(good, {"--grid", "tvis=1e-12:1e-9:5"}), "--grid", "tvis=1e-12:1e-9:5");
   expect_rejected(fit(good, {"--A", "1e-6"}), "--A", "1e-6");
+  // 1e10 grid points would exhaust the memory before the first collision.
+  const std::string psl = write_file("bounce_fit_psl.csv", "velocity,cor\n1,0.5\n2,0.6\n3,0.7\n");
+  expect_rejected({"fit", "--data", psl, "--material", "psl", "--radius", "1e-6", "--fit", "gamma,tvis", "--grid",
+                   "gamma=0.01:1:100000,tvis=1e-12:1e-10:100000"},
+                  "--grid", "1e+10 points (1e+10 with the yield axis)");
   expect_rejected(fit(good, {"--threads", "-1"}), "--threads", "-1");
   expect_rejected(fit(good, {"--precision", "0"}), "--precision", "0");
   expect_rejected({"fit", "--data", good, "--material", "ice-bshp96", "--radius", "1e-2", "--model", "power-law"},
