@@ -14,9 +14,6 @@ namespace bounce::python {
 
 namespace {
 
-// Python spells the yield strength yield_strength (yield is a keyword); the front door, yield.
-std::string front_door_name(const std::string& name) { return name == "yield_strength" ? "yield" : name; }
-
 std::vector<double> column(const char* name, const py::object& values) {
   const Array a = to_array(name, values);
   if (a.ndim() != 1) throw InvalidArgument(name, fmt::format("an array of {} dimensions", a.ndim()), "a 1-D array");
@@ -57,15 +54,11 @@ analysis::Experiment from_file(const std::string& path) {
 
 // fit=("gamma", "tvis") or "gamma,tvis"; grid={"gamma": (lo, hi, n)}: the front door's text.
 std::string fit_text(const py::object& names) {
-  if (py::isinstance<py::str>(names)) {
-    std::vector<std::string> parts;
-    for (const auto& p : py::str(names).attr("split")(",")) parts.push_back(front_door_name(py::str(p)));
-    return fmt::format("{}", fmt::join(parts, ","));
-  }
   std::vector<std::string> parts;
-  for (const auto& item : names) {
+  const py::object items = py::isinstance<py::str>(names) ? py::str(names).attr("split")(",") : names;
+  for (const auto& item : items) {
     if (!py::isinstance<py::str>(item)) throw py::type_error("fit: expected parameter names (str)");
-    parts.push_back(front_door_name(py::str(item)));
+    parts.push_back(library_name(py::str(item).cast<std::string>()));
   }
   return fmt::format("{}", fmt::join(parts, ","));
 }
@@ -76,7 +69,7 @@ std::string grid_text(const py::dict& grid) {
     if (!py::isinstance<py::str>(key)) throw py::type_error("grid: expected parameter names (str) as keys");
     const auto t = value.cast<py::sequence>();
     if (t.size() != 3) throw InvalidArgument("grid", py::str(value), "(lo, hi, n) per parameter");
-    const std::string name = front_door_name(py::str(key));
+    const std::string name = library_name(py::str(key).cast<std::string>());
     const double lo = to_number(("grid[" + name + "]").c_str(), t[0]), hi = to_number(("grid[" + name + "]").c_str(), t[1]);
     const double n = to_number(("grid[" + name + "]").c_str(), t[2]);
     items.push_back(fmt::format("{}={}:{}:{}", name, lo, hi, n));

@@ -22,6 +22,11 @@ using detail::Plan;
 using detail::split;
 using detail::trial_inputs;
 
+// A trial's case: the fit command's binding of the fixed inputs with the collision values set.
+Case trial_case(const Plan& plan, std::span<const double> values) {
+  return detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(plan, values)));
+}
+
 Table profile_table(const analysis::Profile& p) {
   Table t;
   t.columns = {"value", "chi2"};
@@ -154,8 +159,8 @@ std::shared_ptr<FitJob::State> prepare(const Inputs& inputs, const analysis::Exp
   for (std::size_t a = 0; a < plan.fitted.size(); ++a) {
     (plan.fitted[a].name == "yield" ? p.yield_axis.emplace() : p.collision_axes.emplace_back()) = plan.axes[a];
   }
-  p.case_at = [&plan, &c](std::span<const double> values) {
-    Case trial = detail::make_case(detail::bind_inputs(c, trial_inputs(plan, values)));
+  p.case_at = [&plan](std::span<const double> values) {
+    Case trial = trial_case(plan, values);
     return analysis::FitCase{std::move(trial.pair), std::move(trial.model), trial.options};
   };
   p.threads = static_cast<unsigned>(*bound.own.real("threads"));
@@ -258,7 +263,7 @@ void add_characteristic_velocity(Record& r, const Fitted& f) {
   const std::size_t collision = names.size() - (names.back() == "yield" ? 1 : 0);
   auto g_star = [&](std::vector<double> values) -> std::optional<double> {
     values.resize(collision);
-    const Case c = detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(plan, values)));
+    const Case c = trial_case(plan, values);
     if (!c.model.hertz || !(c.model.hertz->dissipative_constant > 0.0)) return std::nullopt;
     return analysis::viscoelastic_scales(c.pair, c.model, 1.0).characteristic_velocity;
   };
@@ -280,7 +285,7 @@ Table best_curve(const Fitted& f, const analysis::Experiment& data) {
   const bool yield = names.back() == "yield";
   std::vector<double> values = f.result.best.values;
   if (yield) values.pop_back();
-  const Case c = detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(f.plan(), values)));
+  const Case c = trial_case(f.plan(), values);
   double lo = data.points.front().velocity, hi = lo;
   for (const auto& m : data.points) lo = std::min(lo, m.velocity), hi = std::max(hi, m.velocity);
   lo /= 2.0;
