@@ -148,7 +148,8 @@ CollisionOutcome dynamic_contact_collision(const Pair& pair, const models::Model
   const models::KrijtParameters& p = contact.parameters;
   const double hysteresis = models::krijt_hysteresis_estimate(p, velocity);
   const bool reduced = !contact.instantaneous_crack && hysteresis < models::krijt_reduction_threshold;
-  const auto o = adhesive_options(options);
+  auto o = adhesive_options(options);
+  if (model.end_rule == models::EndRule::pull_off) o.release = dynamics::AdhesiveRelease::pull_off;
   CollisionOutcome out = contact.instantaneous_crack || reduced
                              ? dynamics::integrate_jkr_viscoelastic_collision(p, velocity, o)
                              : dynamics::integrate_krijt_collision(p, velocity, o);

@@ -164,6 +164,11 @@ std::vector<std::string> takers(std::string_view name, bool laws) {
   return out;
 }
 
+// How messages name the command: "bounce collide", or LAMMPS's "pair_coeff".
+std::string who(const CommandSpec& command) {
+  return command.name == "pair_coeff" ? std::string("pair_coeff") : "bounce " + command.name;
+}
+
 [[noreturn]] void refuse_unknown(const std::string& name, const ParameterValue& value, const CommandSpec& command,
                                  const std::string& model, const std::vector<std::string>& names) {
   const std::string value_given = value_text(value);
@@ -182,11 +187,10 @@ std::vector<std::string> takers(std::string_view name, bool laws) {
   }
   if (!owners.empty()) {
     throw InvalidArgument(name, value_given,
-                          fmt::format("no {} with bounce {}: it belongs to bounce {}", name, command.name,
-                                      fmt::join(owners, ", ")));
+                          fmt::format("no {} with {}: it belongs to bounce {}", name, who(command), fmt::join(owners, ", ")));
   }
   throw InvalidArgument(name, value_given,
-                        fmt::format("a parameter that bounce {} takes: one of {}", command.name, fmt::join(names, ", ")));
+                        fmt::format("a parameter that {} takes: one of {}", who(command), fmt::join(names, ", ")));
 }
 
 // Does `command` work with the model `name`?
@@ -294,7 +298,9 @@ Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
       group_in.emplace(name, value);
     } else {
       std::vector<std::string> names;
-      for (const auto& s : merge_specs({c.parameters, pair, group})) names.push_back(s.name);
+      for (const auto& s : merge_specs({c.parameters, pair, group})) {
+        if (!unused_by(c, s.name)) names.push_back(s.name);
+      }
       refuse_unknown(name, value, c, b.model, names);
     }
   }

@@ -1,5 +1,6 @@
 #include "bounce/contact/jkr.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -70,6 +71,27 @@ double contact_radius_from_overlap(const Parameters& p, double delta) {
                                                     boost::math::tools::eps_tolerance<double>(50),
                                                     iterations);
   return 0.5 * (x0 + x1);
+}
+
+DisplacementBranch::DisplacementBranch(const Parameters& p)
+    : r_(p.effective_radius), c_(std::sqrt(2.0 * pi * p.surface_energy / p.effective_modulus)),
+      u_fold_(std::cbrt(c_ * r_ / 4.0)) {}
+
+double DisplacementBranch::radius(double delta) const {  // K13 (8) in u = sqrt(a)
+  const double cr = c_ * r_;
+  auto h = [&](double u) { return u * u * u * u - cr * u - r_ * delta; };
+  double u = std::max(2.0 * u_fold_, std::sqrt(std::sqrt(std::max(2.0 * r_ * delta, 0.0))));
+  while (h(u) < 0.0) u *= 2.0;
+  for (int i = 0; i < 60; ++i) {
+    const double step = h(u) / (4.0 * u * u * u - cr);
+    u -= step;
+    if (u <= u_fold_) {
+      u = u_fold_;
+      break;
+    }
+    if (std::abs(step) <= 1e-16 * u) break;
+  }
+  return u * u;
 }
 
 double total_energy(const Parameters& p, double a) {  // K13 (3) + (6)

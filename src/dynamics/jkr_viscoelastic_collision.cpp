@@ -20,35 +20,12 @@ namespace {
 using detail::Scales;
 using State = detail::State<3>;  // delta / L, rate / g, bulk dissipation / E0
 
-// Contact radius on the JKR branch stable under displacement control, a >= a_c:
-// with u = sqrt(a), K13 (8) is u^4 - c R u - R delta = 0, c = sqrt(2 pi gamma / E*);
-// Newton from above converges monotonically (the quartic is convex for u > u_c).
-class JkrBranch {
- public:
-  explicit JkrBranch(const models::KrijtParameters& p)
-      : r_(p.effective_radius), c_(std::sqrt(2.0 * detail::pi * p.surface_energy / p.effective_modulus)),
-        u_fold_(std::cbrt(c_ * r_ / 4.0)) {}
-
-  double radius(double delta) const {
-    const double cr = c_ * r_;
-    auto h = [&](double u) { return u * u * u * u - cr * u - r_ * delta; };
-    double u = std::max(2.0 * u_fold_, std::sqrt(std::sqrt(std::max(2.0 * r_ * delta, 0.0))));
-    while (h(u) < 0.0) u *= 2.0;
-    for (int i = 0; i < 60; ++i) {
-      const double step = h(u) / (4.0 * u * u * u - cr);
-      u -= step;
-      if (u <= u_fold_) {
-        u = u_fold_;
-        break;
-      }
-      if (std::abs(step) <= 1e-16 * u) break;
-    }
-    return u * u;
-  }
-
- private:
-  double r_, c_, u_fold_;
-};
+// Where the contact breaks: at the fold delta_c (d delta / da = 0, the end K13 (25) assumes) or,
+// as LAMMPS's `pair granular jkr` ends it, at the pull-off point (dF/da = 0, F = -(3/2) pi gamma R).
+double release_overlap(const contact::jkr::Parameters& p, AdhesiveRelease release) {
+  return release == AdhesiveRelease::pull_off ? contact::jkr::overlap(p, contact::jkr::pull_off_contact_radius(p))
+                                              : contact::jkr::separation_overlap(p);
+}
 
 // The events of the collision (their ids).
 enum JkrEvent : int { max_compression, release, sticks, end_of_follow };
@@ -73,21 +50,21 @@ class JkrViscoelastic {
   const models::KrijtParameters& p_;
   const AdhesiveCollisionOptions& options_;
   const Scales s_;
-  const JkrBranch branch_;
-  const double delta_c_, snap_release_, release_energy_, t_hertz_;
+  const contact::jkr::DisplacementBranch branch_;
+  const double delta_release_, snap_release_, release_energy_, t_hertz_;
   const bool follow_;
   CollisionOutcome out_;
 };
 
 JkrViscoelastic::JkrViscoelastic(const models::KrijtParameters& p, double speed, const AdhesiveCollisionOptions& options)
-    : p_(p), options_(options), s_(detail::scales_for(p, speed)), branch_(p),
-      delta_c_(contact::jkr::separation_overlap({p.effective_radius, p.effective_modulus, p.surface_energy})),
+    : p_(p), options_(options), s_(detail::scales_for(p, speed)), branch_({p.effective_radius, p.effective_modulus, p.surface_energy}),
+      delta_release_(release_overlap({p.effective_radius, p.effective_modulus, p.surface_energy}, options.release)),
       // Snap-on at delta = 0: a jumps from 0 to the JKR radius; -(U_E + U_S) is released (crack).
       snap_release_(-models::contact_energy(
           p, contact::jkr::snap_on_contact_radius({p.effective_radius, p.effective_modulus, p.surface_energy}), 0.0)),
-      // Release needs U_E + U_S = U(a_c, delta_c) > 0 at the fold; the mechanical energy
+      // Release needs U_E + U_S = U(a, delta) > 0 at the release point; the mechanical energy
       // never increases, so once it is below that the grains can never separate.
-      release_energy_(models::contact_energy(p, branch_.radius(delta_c_), delta_c_) / s_.energy),
+      release_energy_(models::contact_energy(p, branch_.radius(delta_release_), delta_release_) / s_.energy),
       t_hertz_(detail::scaled_hertz_time(p, speed, s_)), follow_(options.follow_time > 0.0) {
   out_.method = "integrate";
 }
@@ -110,7 +87,7 @@ double JkrViscoelastic::mechanical_minus_release(const State& y) const {
 std::vector<detail::Event<3>> JkrViscoelastic::events(bool following) const {
   std::vector<detail::Event<3>> e(3);
   e[0] = {max_compression, [](double, const State& y) { return y[1]; }, -1, false, true, -1};
-  e[1] = {release, [this](double, const State& y) { return y[0] - delta_c_ / s_.length; }, -1, true, true, -1};
+  e[1] = {release, [this](double, const State& y) { return y[0] - delta_release_ / s_.length; }, -1, true, true, -1};
   e[2] = {sticks, [this](double, const State& y) { return mechanical_minus_release(y); }, -1, !following, true, -1};
   if (following) {  // the end of a followed collision, with the state there
     const double end = options_.follow_time / s_.time;
@@ -205,8 +182,8 @@ void JkrViscoelastic::finish(const detail::IntegrationResult<3>& result) {
   const bool bounced = result.terminal.id == release;
   out_.energy.bulk_dissipated = end[2] * s_.energy;
   out_.energy.crack_dissipated = snap_release_;
-  // Release at the fold: a drops to 0 at delta_c, U_E + U_S there is dissipated.
-  const double delta = bounced ? delta_c_ : end[0] * s_.length;
+  // Release at the fold (or the pull-off point): a drops to 0 there, U_E + U_S there is dissipated.
+  const double delta = bounced ? delta_release_ : end[0] * s_.length;
   detail::finish_adhesive(out_, p_, s_, end[1], branch_.radius(delta), delta, bounced);
   if (options_.record_trajectory && !out_.trajectory.empty() && bounced) {
     out_.trajectory.back().crack_dissipated = out_.energy.crack_dissipated;

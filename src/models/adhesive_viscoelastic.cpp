@@ -4,7 +4,9 @@
 #include <numbers>
 
 #include "bounce/contact/hertz.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/models/normal_force.hpp"
+#include "bounce/pair/mixing.hpp"
 #include "factories.hpp"
 #include "hertz_type.hpp"
 
@@ -12,25 +14,44 @@ namespace bounce::models {
 
 namespace {
 
+// BP04 (8.56) + (8.57); 0 out of contact.
+double adhesive_viscoelastic_force(const AdhesiveViscoelasticParameters& p, double xi, double rate) {
+  if (xi <= 0.0) return 0.0;
+  const double q = std::sqrt(std::sqrt(xi));  // xi^{1/4}
+  return p.rho * xi * q * q + p.rho * 1.5 * p.a * q * q * rate - p.adhesion * xi / q + 0.75 * p.b * p.adhesion * rate / q;
+}
+
+// The integral of (8.56).
+double adhesive_viscoelastic_energy(const AdhesiveViscoelasticParameters& p, double xi) {
+  if (xi <= 0.0) return 0.0;
+  return 0.4 * p.rho * xi * xi * std::sqrt(xi) - 4.0 / 7.0 * p.adhesion * std::pow(xi, 1.75);
+}
+
+// The constants of (8.56)-(8.57) for a pair of effective modulus E*, surface energy gamma and
+// effective radius and mass R, m.
+AdhesiveViscoelasticParameters adhesive_parameters(double modulus, double gamma, double r, double m, double a, double b) {
+  AdhesiveViscoelasticParameters out;
+  out.rho = hertz_constant(modulus, r);  // BP04 (8.24)
+  // BP04 (8.56): C = sqrt(6 pi gamma / D) R_eff^{3/4}
+  out.adhesion = std::sqrt(6.0 * std::numbers::pi * gamma / hertz_compliance_d(modulus)) * std::pow(r, 0.75);
+  out.a = a;
+  out.b = b;
+  out.effective_mass = m;
+  out.effective_radius = r;
+  return out;
+}
+
 class AdhesiveViscoelasticForce final : public NormalForceModel {
  public:
   explicit AdhesiveViscoelasticForce(const AdhesiveViscoelasticParameters& p) : p_(p) {}
   std::string_view name() const override { return "adhesive-viscoelastic"; }
-  double force(double xi, double rate) const override {  // BP04 (8.56) + (8.57)
-    if (xi <= 0.0) return 0.0;
-    const double q = std::sqrt(std::sqrt(xi));  // xi^{1/4}
-    return p_.rho * xi * q * q + p_.rho * 1.5 * p_.a * q * q * rate - p_.adhesion * xi / q +
-           0.75 * p_.b * p_.adhesion * rate / q;
-  }
+  double force(double xi, double rate) const override { return adhesive_viscoelastic_force(p_, xi, rate); }
   double force_sign(double xi, double rate) const override { return force(xi, rate); }
   double elastic_force(double xi) const override {  // (8.56)
     if (xi <= 0.0) return 0.0;
     return p_.rho * xi * std::sqrt(xi) - p_.adhesion * std::pow(xi, 0.75);
   }
-  double elastic_energy(double xi) const override {  // integral of (8.56)
-    if (xi <= 0.0) return 0.0;
-    return 0.4 * p_.rho * xi * xi * std::sqrt(xi) - 4.0 / 7.0 * p_.adhesion * std::pow(xi, 1.75);
-  }
+  double elastic_energy(double xi) const override { return adhesive_viscoelastic_energy(p_, xi); }
   double contact_radius(double xi) const override { return contact::hertz::contact_radius(p_.effective_radius, xi); }
   double reference_overlap(double speed) const override {
     return power_law_reference_overlap(p_.rho / p_.effective_mass, 1.5, speed);
@@ -56,7 +77,33 @@ double dissipative_constant_b(const Pair& pair, const Parameters& p, double a) {
   return a;
 }
 
+// The same forces per DEM contact, their constants from the contact's R_eff. BP04 start and
+// end the contact at a tiny overlap (footnote 2) against the singular xi^{-1/4}; a DEM step
+// samples the force at its own overlaps, from the first positive one to the last.
+class AdhesiveViscoelasticContact final : public ContactLaw {
+ public:
+  AdhesiveViscoelasticContact(double modulus, double gamma, double a, double b)
+      : modulus_(modulus), gamma_(gamma), a_(a), b_(b) {}
+  double force(const ContactGeometry& g, double xi, double rate) const override {
+    return adhesive_viscoelastic_force(at(g), xi, rate);
+  }
+  double energy(const ContactGeometry& g, double xi) const override { return adhesive_viscoelastic_energy(at(g), xi); }
+
+ private:
+  AdhesiveViscoelasticParameters at(const ContactGeometry& g) const {
+    return adhesive_parameters(modulus_, gamma_, g.effective_radius, g.effective_mass, a_, b_);
+  }
+  double modulus_, gamma_, a_, b_;
+};
+
 }  // namespace
+
+std::shared_ptr<const ContactLaw> adhesive_viscoelastic_contact(const Pair& pair, const Parameters& p) {
+  const double gamma = detail::adhesive_surface_energy(pair, "adhesive-viscoelastic");
+  const double a = detail::dissipative_constant(pair, p, "adhesive-viscoelastic");
+  return std::make_shared<AdhesiveViscoelasticContact>(pair.effective_modulus(), gamma, a,
+                                                       dissipative_constant_b(pair, p, a));
+}
 
 std::unique_ptr<NormalForceModel> make_adhesive_viscoelastic_force(const AdhesiveViscoelasticParameters& p) {
   return std::make_unique<AdhesiveViscoelasticForce>(p);
@@ -64,15 +111,10 @@ std::unique_ptr<NormalForceModel> make_adhesive_viscoelastic_force(const Adhesiv
 
 Model make_adhesive_viscoelastic(const Pair& pair, const Parameters& p) {
   const double gamma = detail::adhesive_surface_energy(pair, "adhesive-viscoelastic");
-  AdhesiveViscoelasticParameters a;
-  a.rho = pair.hertz_constant();
-  // BP04 (8.56): C = sqrt(6 pi gamma / D) R_eff^{3/4}
-  a.adhesion = std::sqrt(6.0 * std::numbers::pi * gamma / pair.hertz_compliance_d()) *
-               std::pow(pair.effective_radius(), 0.75);
-  a.a = detail::dissipative_constant(pair, p, "adhesive-viscoelastic");
-  a.b = dissipative_constant_b(pair, p, a.a);
-  a.effective_mass = pair.effective_mass();
-  a.effective_radius = pair.effective_radius();
+  const double dissipative = detail::dissipative_constant(pair, p, "adhesive-viscoelastic");
+  const AdhesiveViscoelasticParameters a =
+      adhesive_parameters(pair.effective_modulus(), gamma, pair.effective_radius(), pair.effective_mass(), dissipative,
+                          dissipative_constant_b(pair, p, dissipative));
   Model m;
   m.force = make_adhesive_viscoelastic_force(a);
   m.hertz = HertzScaling{a.rho, a.a};

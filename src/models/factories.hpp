@@ -3,6 +3,7 @@
 // per file (src/models/<model>.cpp).
 
 #include "bounce/core/parameters.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/models/model.hpp"
 #include "bounce/pair/pair.hpp"
 
@@ -15,5 +16,13 @@ Model make_power_law(const Pair& pair, const Parameters& p);              // pow
 Model make_adhesive_viscoelastic(const Pair& pair, const Parameters& p);  // adhesive_viscoelastic.cpp
 Model make_jkr_viscoelastic(const Pair& pair, const Parameters& p);       // krijt.cpp
 Model make_krijt(const Pair& pair, const Parameters& p);                  // krijt.cpp
+
+// The same models as DEM contact laws (contact_law.hpp), in the same files; krijt has none yet.
+std::shared_ptr<const ContactLaw> hertz_contact(const Pair& pair, const Parameters& p);
+std::shared_ptr<const ContactLaw> viscoelastic_contact(const Pair& pair, const Parameters& p);
+std::shared_ptr<const ContactLaw> viscoelastic_shifted_contact(const Pair& pair, const Parameters& p);
+std::shared_ptr<const ContactLaw> power_law_contact(const Pair& pair, const Parameters& p);
+std::shared_ptr<const ContactLaw> adhesive_viscoelastic_contact(const Pair& pair, const Parameters& p);
+std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const Parameters& p);
 
 }  // namespace bounce::models

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "bounce/contact/independent.hpp"
+#include "bounce/contact/jkr.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/models/crack.hpp"
 #include "factories.hpp"
@@ -114,9 +116,49 @@ Model dynamic_contact(const Pair& pair, const Parameters& p, std::string_view na
   return m;
 }
 
+// jkr-viscoelastic per DEM contact: K13 (2) + (19) with a on the JKR branch a(delta) of K13 (8)
+// for the contact's R_eff; it holds down to the fold delta_c or the pull-off point.
+class JkrViscoelasticContact final : public ContactLaw {
+ public:
+  JkrViscoelasticContact(const KrijtParameters& p, bool pull_off) : p_(p), pull_off_(pull_off) {}
+  double force(const ContactGeometry& g, double delta, double rate) const override {
+    const KrijtParameters p = at(g);
+    const double a = contact::jkr::DisplacementBranch(jkr(p)).radius(delta);
+    return elastic_force(p, a, delta) + bulk_dissipative_force(p, a, rate);
+  }
+  double energy(const ContactGeometry& g, double delta) const override {
+    const KrijtParameters p = at(g);
+    return contact_energy(p, contact::jkr::DisplacementBranch(jkr(p)).radius(delta), delta);
+  }
+  double release_overlap(const ContactGeometry& g) const override {
+    const contact::jkr::Parameters j = jkr(at(g));
+    return pull_off_ ? contact::jkr::overlap(j, contact::jkr::pull_off_contact_radius(j))
+                     : contact::jkr::separation_overlap(j);
+  }
+
+ private:
+  KrijtParameters at(const ContactGeometry& g) const {
+    KrijtParameters p = p_;
+    p.effective_radius = g.effective_radius;
+    p.effective_mass = g.effective_mass;
+    return p;
+  }
+  static contact::jkr::Parameters jkr(const KrijtParameters& p) {
+    return {p.effective_radius, p.effective_modulus, p.surface_energy};
+  }
+  KrijtParameters p_;
+  bool pull_off_;
+};
+
 }  // namespace
 
 Model make_krijt(const Pair& pair, const Parameters& p) { return dynamic_contact(pair, p, "krijt", false); }
+
+std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const Parameters& p) {
+  const Model m = dynamic_contact(pair, p, "jkr-viscoelastic", true);
+  return std::make_shared<JkrViscoelasticContact>(m.dynamic_contact->parameters,
+                                                  parse_end_rule(p.text("contact_end")) == EndRule::pull_off);
+}
 
 Model make_jkr_viscoelastic(const Pair& pair, const Parameters& p) {
   return dynamic_contact(pair, p, "jkr-viscoelastic", true);

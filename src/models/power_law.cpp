@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "bounce/contact/hertz.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "factories.hpp"
 
@@ -9,15 +10,23 @@ namespace bounce::models {
 
 namespace {
 
+// BP04 (8.63): F = m_eff (D1 xi^alpha + D2 xi^gamma sgn(xi') |xi'|^beta); 0 out of contact.
+double power_law_force(const PowerLawParameters& p, double m, double xi, double rate) {
+  if (xi <= 0.0) return 0.0;
+  const double rate_term = std::copysign(std::pow(std::abs(rate), p.beta), rate);
+  return m * (p.d1 * std::pow(xi, p.alpha) + p.d2 * std::pow(xi, p.gamma) * rate_term);
+}
+
+// Its potential, integral of m D1 xi^alpha.
+double power_law_energy(const PowerLawParameters& p, double m, double xi) {
+  return xi <= 0.0 ? 0.0 : m * p.d1 * std::pow(xi, p.alpha + 1.0) / (p.alpha + 1.0);
+}
+
 class PowerLawForce final : public NormalForceModel {
  public:
   PowerLawForce(const PowerLawParameters& p, double m, double radius) : p_(p), m_(m), radius_(radius) {}
   std::string_view name() const override { return "power-law"; }
-  double force(double xi, double rate) const override {  // BP04 (8.63)
-    if (xi <= 0.0) return 0.0;
-    const double rate_term = std::copysign(std::pow(std::abs(rate), p_.beta), rate);
-    return m_ * (p_.d1 * std::pow(xi, p_.alpha) + p_.d2 * std::pow(xi, p_.gamma) * rate_term);
-  }
+  double force(double xi, double rate) const override { return power_law_force(p_, m_, xi, rate); }
   double force_sign(double xi, double rate) const override {
     // The force law with xi clamped at 0: continuous through the end of contact.
     const double x = std::max(xi, 0.0);
@@ -25,9 +34,7 @@ class PowerLawForce final : public NormalForceModel {
     return p_.d1 * std::pow(x, p_.alpha) + p_.d2 * std::pow(x, p_.gamma) * rate_term;
   }
   double elastic_force(double xi) const override { return xi <= 0.0 ? 0.0 : m_ * p_.d1 * std::pow(xi, p_.alpha); }
-  double elastic_energy(double xi) const override {
-    return xi <= 0.0 ? 0.0 : m_ * p_.d1 * std::pow(xi, p_.alpha + 1.0) / (p_.alpha + 1.0);
-  }
+  double elastic_energy(double xi) const override { return power_law_energy(p_, m_, xi); }
   double contact_radius(double xi) const override { return contact::hertz::contact_radius(radius_, xi); }
   double reference_overlap(double speed) const override {  // BP04 (8.65)
     return power_law_reference_overlap(p_.d1, p_.alpha, speed);
@@ -39,7 +46,34 @@ class PowerLawForce final : public NormalForceModel {
   double radius_;
 };
 
+// The same law per DEM contact, with the contact's m_eff.
+class PowerLawContact final : public ContactLaw {
+ public:
+  explicit PowerLawContact(const PowerLawParameters& p) : p_(p) {}
+  double force(const ContactGeometry& g, double xi, double rate) const override {
+    return power_law_force(p_, g.effective_mass, xi, rate);
+  }
+  double energy(const ContactGeometry& g, double xi) const override { return power_law_energy(p_, g.effective_mass, xi); }
+
+ private:
+  PowerLawParameters p_;
+};
+
+PowerLawParameters power_law_parameters(const Parameters& p) {
+  PowerLawParameters law;
+  law.d1 = p.require_real("power_d1", "D1 > 0 for the power-law model");
+  law.d2 = p.require_real("power_d2", "D2 >= 0 for the power-law model");
+  law.alpha = *p.real("power_alpha");
+  law.beta = *p.real("power_beta");
+  law.gamma = *p.real("power_gamma");
+  return law;
+}
+
 }  // namespace
+
+std::shared_ptr<const ContactLaw> power_law_contact(const Pair&, const Parameters& p) {
+  return std::make_shared<PowerLawContact>(power_law_parameters(p));
+}
 
 std::unique_ptr<NormalForceModel> make_power_law_force(const PowerLawParameters& parameters, double effective_mass,
                                                        double equivalent_radius) {
@@ -47,12 +81,7 @@ std::unique_ptr<NormalForceModel> make_power_law_force(const PowerLawParameters&
 }
 
 Model make_power_law(const Pair& pair, const Parameters& p) {
-  PowerLawParameters law;
-  law.d1 = p.require_real("power_d1", "D1 > 0 for the power-law model");
-  law.d2 = p.require_real("power_d2", "D2 >= 0 for the power-law model");
-  law.alpha = *p.real("power_alpha");
-  law.beta = *p.real("power_beta");
-  law.gamma = *p.real("power_gamma");
+  const PowerLawParameters law = power_law_parameters(p);
   Model m;
   m.force = make_power_law_force(law, pair.effective_mass(), pair.effective_radius());
   m.adhesion = Adhesion::unchecked;

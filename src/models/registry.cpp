@@ -26,23 +26,23 @@ using namespace catalogue;
 std::vector<ModelRow> builtin_rows() {
   return {
       {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)",
-       Capabilities{.master_curve = true, .convex = true}, {}, &make_hertz, {"yield"}},
+       Capabilities{.master_curve = true, .convex = true}, {}, &make_hertz, {"yield"}, &hertz_contact},
       {"viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'",
        "BP04 (8.42), BSHP96 (24)", Capabilities{.master_curve = true, .convex = true},
-       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic, {"A"}},
+       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic, {"A"}, &viscoelastic_contact},
       {"viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero", "BSHP96 (25)",
        Capabilities{.convex = true},
        {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic_shifted,
-       {"A"}},
+       {"A"}, &viscoelastic_shifted_contact},
       {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", Capabilities{},
-       {power_d1(), power_alpha(), power_d2(), power_beta(), power_gamma()}, &make_power_law},
+       {power_d1(), power_alpha(), power_d2(), power_beta(), power_gamma()}, &make_power_law, {}, &power_law_contact},
       {"adhesive-viscoelastic", "BP04's quasi-static adhesive force (8.56) with its dissipation (8.57)",
        "BP04 (8.56)-(8.58), docs/adhesive.md", Capabilities{.adhesive = true},
        {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time(), dissipative_constant_b(), z0()},
-       &make_adhesive_viscoelastic, {"gamma", "tvis", "yield"}},
+       &make_adhesive_viscoelastic, {"gamma", "tvis", "yield"}, &adhesive_viscoelastic_contact},
       {"jkr-viscoelastic", "contact radius on the JKR equilibrium (instantaneous crack) plus the bulk force",
        "K13 (8), (9), (19), (20)", Capabilities{.adhesive = true, .dynamic_contact = true},
-       {relaxation_time(), dissipative_constant(), z0()}, &make_jkr_viscoelastic, {"gamma", "tvis", "yield"}},
+       {relaxation_time(), dissipative_constant(), z0()}, &make_jkr_viscoelastic, {"gamma", "tvis", "yield"}, &jkr_viscoelastic_contact},
       {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
        "K13 (2), (14)-(21), appendices B, C", Capabilities{.adhesive = true, .dynamic_contact = true, .stiff = true},
        {relaxation_time(), dissipative_constant(), z0(), k()}, &make_krijt, {"gamma", "tvis", "yield"}},
@@ -52,7 +52,9 @@ std::vector<ModelRow> builtin_rows() {
 // Every model: the end rule, plastic losses, the tangential law, the method.
 std::vector<ParameterSpec> every_model() {
   return {
-      choice_parameter("contact_end", {"overlap", "force"}, "overlap | force: when the contact ends (default overlap)"),
+      choice_parameter("contact_end", {"overlap", "force", "fold", "pull-off"},
+                       "overlap | force | fold | pull-off: when the contact ends (default overlap; fold and pull-off: "
+                       "jkr-viscoelastic)"),
       // K13 Fig 7 finds Y / E_soft from 1e-3 to the theoretical 0.2; at 1 no collision yields.
       fittable(real_parameter("yield", "yield strength Y", "Pa", positive(),
                               "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
@@ -114,6 +116,27 @@ std::optional<TangentialModel> tangential_model(const Pair& pair, const Paramete
   return t;
 }
 
+// The end rules a model takes: overlap and force for non-adhesive laws; an adhesive contact
+// ends where it breaks, not where the force first vanishes. jkr-viscoelastic's contact breaks at
+// the JKR fold (its `overlap`, or `fold`) or, as LAMMPS ends it, at the pull-off point; krijt's
+// where K13's crack law ends it (`overlap`).
+EndRule checked_end_rule(const ModelRow& row, const std::string& text) {
+  const EndRule rule = parse_end_rule(text);
+  const bool jkr = row.capabilities.dynamic_contact && !row.capabilities.stiff;  // jkr-viscoelastic
+  const bool ok = rule == EndRule::overlap || (rule == EndRule::force && !row.capabilities.adhesive) ||
+                  ((rule == EndRule::fold || rule == EndRule::pull_off) && jkr);
+  if (ok) return rule;
+  std::string allowed = "overlap or force";
+  if (jkr) {
+    allowed = "overlap (the fold), fold or pull-off";
+  } else if (row.capabilities.adhesive) {
+    allowed = "overlap (an adhesive contact ends where it breaks";
+    allowed += row.capabilities.dynamic_contact ? ", here where K13's crack law ends it)"
+                                                : ", not where the force first vanishes)";
+  }
+  throw InvalidArgument("contact_end", text, fmt::format("{} for model {}", allowed, row.name));
+}
+
 }  // namespace
 
 const ModelRow& ModelRegistry::add(ModelRow row) {
@@ -165,14 +188,25 @@ Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
   Model m = row.factory(pair, p);
   m.name = row.name;
   m.capabilities = row.capabilities;
-  m.end_rule = parse_end_rule(p.text("contact_end"));
-  if (m.capabilities.adhesive && m.end_rule == EndRule::force) {
-    throw InvalidArgument("contact_end", "force",
-                          fmt::format("overlap for model {} (an adhesive contact ends where it breaks, not where the "
-                                      "force first vanishes)",
-                                      row.name));
-  }
+  m.end_rule = checked_end_rule(row, p.text("contact_end"));
   m.yield_strength = p.real("yield");
+  m.tangential = tangential_model(pair, p);
+  return m;
+}
+
+DemModel make_contact_law(const Pair& pair, std::string_view name, const Parameters& p) {
+  const ModelRow& row = model_registry().at(name);
+  if (!row.contact_law) {
+    std::vector<std::string> with;
+    for (const ModelRow& r : model_registry().rows()) {
+      if (r.contact_law) with.push_back(r.name);
+    }
+    throw InvalidArgument("model", row.name, fmt::format("a model with a DEM contact law: {}", fmt::join(with, ", ")));
+  }
+  DemModel m;
+  m.name = row.name;
+  m.end_rule = checked_end_rule(row, p.text("contact_end"));
+  m.normal = row.contact_law(pair, p);
   m.tangential = tangential_model(pair, p);
   return m;
 }

@@ -1,5 +1,7 @@
 #include "bounce/models/tangential.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <fmt/format.h>
@@ -36,6 +38,49 @@ void validate(const TangentialModel& m) {
   } else {
     require_non_negative("shear_damping", m.shear_damping, "shear damping gamma_s [1/s] (BSHP96 (39))");
   }
+}
+
+namespace {
+double norm(const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+// The spring's state grown by `step` (the sliding of one time step, scaled), with every break
+// at |state| = limit taken out: the spring restarts at each break (BSHP96 (35) with its floor).
+void grow_with_breaks(double state[3], const double step[3], double limit) {
+  for (int k = 0; k < 3; ++k) state[k] += step[k];
+  const double size = norm(state);
+  if (!(limit > 0.0)) {
+    std::fill(state, state + 3, 0.0);
+  } else if (size >= limit) {
+    const double rest = std::fmod(size, limit) / size;
+    for (int k = 0; k < 3; ++k) state[k] *= rest;
+  }
+}
+}  // namespace
+
+void tangential_step(const TangentialModel& t, double normal_force, double effective_mass, const double sliding[3],
+                     double dt, bool update, double h[3], double force[3]) {
+  const double fn = std::max(normal_force, 0.0);  // asperities carry no shear in tension
+  if (t.law == TangentialLaw::step) {  // BSHP96 (39)
+    const double v = norm(sliding);
+    const double size = v > 0.0 ? std::min(t.shear_damping * effective_mass * v, t.friction * fn) / v : 0.0;
+    for (int k = 0; k < 3; ++k) force[k] = -size * sliding[k];
+    return;
+  }
+  const double stiffness = t.friction * fn / t.asperity_size;  // k of BSHP96 (35)
+  if (t.form == AsperityForm::published) {  // BSHP96 (35)-(36): the history is the extension
+    if (update) {
+      const double step[3] = {sliding[0] * dt, sliding[1] * dt, sliding[2] * dt};
+      grow_with_breaks(h, step, t.asperity_size);
+    }
+    for (int k = 0; k < 3; ++k) force[k] = -stiffness * h[k];
+    return;
+  }
+  const double root = std::sqrt(stiffness);  // passive: the history is sqrt(k) times the extension
+  if (update) {
+    const double step[3] = {root * sliding[0] * dt, root * sliding[1] * dt, root * sliding[2] * dt};
+    grow_with_breaks(h, step, root * t.asperity_size);
+  }
+  for (int k = 0; k < 3; ++k) force[k] = -root * h[k];
 }
 
 }  // namespace bounce::models

@@ -4,7 +4,9 @@
 #include <string>
 
 #include "bounce/contact/hertz.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/models/normal_force.hpp"
+#include "bounce/pair/mixing.hpp"
 #include "factories.hpp"
 #include "hertz_type.hpp"
 
@@ -12,21 +14,39 @@ namespace bounce::models {
 
 namespace {
 
+// BP04 (8.42), (8.37): F = C0 sqrt(xi) (xi + (3/2) A xi'); 0 out of contact.
+double viscoelastic_force(double c0, double a, double xi, double rate) {
+  if (xi <= 0.0) return 0.0;
+  const double root = std::sqrt(xi);
+  return c0 * root * (xi + 1.5 * a * rate);
+}
+
 class ViscoelasticForce final : public detail::HertzTypeForce {
  public:
   ViscoelasticForce(const HertzGeometry& g, double a, std::string_view name) : HertzTypeForce(g), a_(a), name_(name) {}
   std::string_view name() const override { return name_; }
-  double force(double xi, double rate) const override {  // BP04 (8.42), (8.37)
-    if (xi <= 0.0) return 0.0;
-    const double root = std::sqrt(xi);
-    return g_.force_constant * root * (xi + 1.5 * a_ * rate);
-  }
+  double force(double xi, double rate) const override { return viscoelastic_force(g_.force_constant, a_, xi, rate); }
   double force_sign(double xi, double rate) const override {
     return xi + 1.5 * a_ * rate;  // F = C0 sqrt(xi) (xi + (3/2) A xi'), continued through xi = 0
   }
  private:
   double a_;
   std::string name_;
+};
+
+// The same law per DEM contact: C0 = rho of BP04 (8.24) from the contact's R_eff.
+class ViscoelasticContact final : public ContactLaw {
+ public:
+  ViscoelasticContact(double modulus, double a) : modulus_(modulus), a_(a) {}
+  double force(const ContactGeometry& g, double xi, double rate) const override {
+    return viscoelastic_force(hertz_constant(modulus_, g.effective_radius), a_, xi, rate);
+  }
+  double energy(const ContactGeometry& g, double xi) const override {
+    return contact::hertz::elastic_energy(hertz_constant(modulus_, g.effective_radius), xi);
+  }
+
+ private:
+  double modulus_, a_;
 };
 
 Model hertz_type(const Pair& pair, const Parameters& p, double a, std::string_view name) {
@@ -45,6 +65,15 @@ std::unique_ptr<NormalForceModel> make_viscoelastic_force(const HertzGeometry& g
 }
 
 Model make_hertz(const Pair& pair, const Parameters& p) { return hertz_type(pair, p, 0.0, "hertz"); }
+
+std::shared_ptr<const ContactLaw> hertz_contact(const Pair& pair, const Parameters&) {
+  return std::make_shared<ViscoelasticContact>(pair.effective_modulus(), 0.0);
+}
+
+std::shared_ptr<const ContactLaw> viscoelastic_contact(const Pair& pair, const Parameters& p) {
+  return std::make_shared<ViscoelasticContact>(pair.effective_modulus(),
+                                               detail::dissipative_constant(pair, p, "viscoelastic"));
+}
 
 Model make_viscoelastic(const Pair& pair, const Parameters& p) {
   const double a = detail::dissipative_constant(pair, p, "viscoelastic");

@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "bounce/contact/hertz.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/models/normal_force.hpp"
+#include "bounce/pair/mixing.hpp"
 #include "factories.hpp"
 #include "hertz_type.hpp"
 
@@ -12,21 +14,44 @@ namespace bounce::models {
 
 namespace {
 
+// BSHP96 (25), clamped at zero: F = C0 max(xi + A xi', 0)^{3/2}; 0 out of contact.
+double shifted_force(double c0, double a, double xi, double rate) {
+  if (xi <= 0.0) return 0.0;
+  const double shifted = std::max(xi + a * rate, 0.0);
+  return c0 * shifted * std::sqrt(shifted);
+}
+
 class ShiftedViscoelasticForce final : public detail::HertzTypeForce {
  public:
   ShiftedViscoelasticForce(const HertzGeometry& g, double a) : HertzTypeForce(g), a_(a) {}
   std::string_view name() const override { return "viscoelastic-shifted"; }
-  double force(double xi, double rate) const override {  // BSHP96 (25), clamped at zero
-    if (xi <= 0.0) return 0.0;
-    const double shifted = std::max(xi + a_ * rate, 0.0);
-    return g_.force_constant * shifted * std::sqrt(shifted);
-  }
+  double force(double xi, double rate) const override { return shifted_force(g_.force_constant, a_, xi, rate); }
   double force_sign(double xi, double rate) const override { return xi + a_ * rate; }
  private:
   double a_;
 };
 
+// The same law per DEM contact: C0 = rho of BP04 (8.24) from the contact's R_eff.
+class ShiftedViscoelasticContact final : public ContactLaw {
+ public:
+  ShiftedViscoelasticContact(double modulus, double a) : modulus_(modulus), a_(a) {}
+  double force(const ContactGeometry& g, double xi, double rate) const override {
+    return shifted_force(hertz_constant(modulus_, g.effective_radius), a_, xi, rate);
+  }
+  double energy(const ContactGeometry& g, double xi) const override {
+    return contact::hertz::elastic_energy(hertz_constant(modulus_, g.effective_radius), xi);
+  }
+
+ private:
+  double modulus_, a_;
+};
+
 }  // namespace
+
+std::shared_ptr<const ContactLaw> viscoelastic_shifted_contact(const Pair& pair, const Parameters& p) {
+  return std::make_shared<ShiftedViscoelasticContact>(pair.effective_modulus(),
+                                                      detail::dissipative_constant(pair, p, "viscoelastic-shifted"));
+}
 
 std::unique_ptr<NormalForceModel> make_shifted_viscoelastic_force(const HertzGeometry& geometry,
                                                                   double dissipative_constant) {

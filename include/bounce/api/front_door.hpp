@@ -23,6 +23,7 @@
 #include "bounce/analysis/tables.hpp"
 #include "bounce/core/parameters.hpp"
 #include "bounce/core/record.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/models/model.hpp"
 #include "bounce/pair/pair.hpp"
 
@@ -138,6 +139,15 @@ struct BatchEntry {
 /// The entries of a manifest; `directory` resolves their data files. InvalidArgument naming
 /// "FILE: experiment N: KEY" for a malformed manifest or data file.
 std::vector<BatchEntry> read_fit_manifest(std::string_view text, const std::string& source, const std::string& directory);
+
+/// LAMMPS's `pair_coeff I J MODEL key value …` (pair_style bounce, docs/lammps.md): not a CLI
+/// command, but bound by the same rules. It takes the pair's materials and the model's
+/// parameters; radii, masses and walls are LAMMPS's, and what the DEM step does not use
+/// (yield, the integrators' settings, convex shapes) is refused with the reason.
+const CommandSpec& pair_coeff_command();
+/// The contact law of one pair of atom types from its pair_coeff inputs, checked like the
+/// CLI's (InvalidArgument naming the input).
+models::DemModel contact_law(const Inputs& inputs);
 
 /// The materials table (built-in, or materials_file).
 Value materials(const Inputs& inputs);

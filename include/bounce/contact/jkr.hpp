@@ -38,6 +38,18 @@ double contact_radius_from_force(const Parameters& p, double force);
 /// Inverse of (8) on the branch stable under displacement control (d delta/da > 0),
 /// delta >= delta_c.
 double contact_radius_from_overlap(const Parameters& p, double overlap);
+/// The same inverse, fast: the JKR branch stable under displacement control as the collision
+/// engine (jkr-viscoelastic) and the DEM contact law evaluate it at every step. With u = sqrt(a),
+/// K13 (8) is u^4 - c R u - R delta = 0, c = sqrt(2 pi gamma / E*); Newton from above converges
+/// monotonically (the quartic is convex for u > u_c). Overlaps below delta_c give a_c.
+class DisplacementBranch {
+ public:
+  explicit DisplacementBranch(const Parameters& p);
+  double radius(double overlap) const;
+
+ private:
+  double r_, c_, u_fold_;
+};
 /// Elastic plus surface energy on the JKR curve, U_E(a, delta(a)) - pi a^2 gamma, K13 (3)+(6).
 double total_energy(const Parameters& p, double contact_radius);
 /// Snap-on radius at first touch (delta = 0): a = (2 pi gamma R^2 / E*)^{1/3} (K13 (8) with delta = 0).

@@ -8,6 +8,11 @@
 
 namespace bounce::dynamics {
 
+/// Where a jkr-viscoelastic contact breaks: at the JKR fold delta_c (the end K13 (25) assumes,
+/// `contact_end fold`) or at the pull-off point, where the force reaches -(3/2) pi gamma R
+/// (`contact_end pull-off`, as LAMMPS's pair granular jkr ends it).
+enum class AdhesiveRelease { fold, pull_off };
+
 struct AdhesiveCollisionOptions {
   /// Relative tolerance (scaled units) of the stiff engine (krijt) and, times 1e-2, of
   /// dopri5 (jkr-viscoelastic). With RODAS, 1e-8 gives COR errors <= 5e-9 for
@@ -23,6 +28,7 @@ struct AdhesiveCollisionOptions {
   /// speed diverges at 1/k, and the rest of the run-away is instantaneous.
   double break_margin = 1e-6;
   StiffEngine engine = StiffEngine::rodas;  ///< krijt only (jkr-viscoelastic is not stiff)
+  AdhesiveRelease release = AdhesiveRelease::fold;  ///< jkr-viscoelastic only
 };
 
 /// K13: delta, delta', a and the two dissipations integrated by the stiff engine (RODAS,
@@ -38,7 +44,8 @@ CollisionOutcome integrate_krijt_collision(const models::KrijtParameters& p, dou
 ///
 /// The same equations with a on the JKR equilibrium (beta = 1, an instantaneous
 /// crack) plus the bulk force (19): snap-on to the JKR radius at delta = 0, release
-/// at the JKR separation overlap delta_c. Integrated with dopri5 (not stiff).
+/// at the JKR separation overlap delta_c (or the pull-off point, options.release).
+/// Integrated with dopri5 (not stiff).
 CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParameters& p, double speed,
                                                       const AdhesiveCollisionOptions& options = {});
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "bounce/core/parameters.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/models/model.hpp"
 #include "bounce/pair/pair.hpp"
 
@@ -28,6 +29,8 @@ namespace bounce::models {
 /// Makes the model's physics for a pair from its validated parameters (the shared slots,
 /// end rule, yield and tangential law, are filled by make_model afterwards).
 using ModelFactory = std::function<Model(const Pair& pair, const Parameters& parameters)>;
+/// Makes the model's normal law as a DEM contact law (contact_law.hpp) for a pair of materials.
+using ContactLawFactory = std::function<std::shared_ptr<const ContactLaw>(const Pair& pair, const Parameters& parameters)>;
 
 struct ModelRow {
   std::string name;        ///< the keyword (`--model NAME`, `bounce.Model(NAME)`)
@@ -39,6 +42,8 @@ struct ModelRow {
   /// What `bounce fit` fits by default (parameters with a fit grid: the model's, the shared
   /// yield, the pair's gamma); empty: the user names them.
   std::vector<std::string> fit = {};
+  /// The model as a DEM contact law (LAMMPS's pair_style bounce); empty: not available.
+  ContactLawFactory contact_law = {};
 };
 
 class ModelRegistry {
@@ -69,6 +74,11 @@ Parameters bind_model_parameters(std::string_view name, const ParameterInputs& i
 Model make_model(const Pair& pair, std::string_view name, const Parameters& parameters);
 /// The same from unchecked inputs (binds them first).
 Model make_model(const Pair& pair, std::string_view name, const ParameterInputs& inputs = {});
+
+/// The model `name` as a DEM contact law for a pair of materials (the pair's radii and masses
+/// are replaced per contact): its normal law, end rule and tangential law. InvalidArgument
+/// ("model", …) for a model without one.
+DemModel make_contact_law(const Pair& pair, std::string_view name, const Parameters& parameters);
 
 /// BP04 (8.38): A = (1/3) (3 eta2 - eta1)^2 / (3 eta2 + 2 eta1) (1 - nu^2)(1 - 2 nu) / (E nu^2).
 double dissipative_constant_from_viscosities(double shear_viscosity, double bulk_viscosity,

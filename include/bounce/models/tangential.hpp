@@ -26,6 +26,20 @@ struct TangentialModel {
   double dense_breaks = 1e3;
 };
 
+/// BSHP96's tangential laws over one step of a DEM code (LAMMPS's pair_style bounce), in three
+/// dimensions, with three numbers of history per contact (in the tangent plane; the caller
+/// rotates them with the contact). `normal_force` is the total normal force, taken as 0 where
+/// it is attractive; `sliding` the relative tangential velocity of the contact points.
+///  * asperity law, published form, BSHP96 (35)-(36): the history is the spring's extension s,
+///    F^T = -k s with k = mu F^N / zeta0; s grows by sliding * dt, and an asperity breaks when
+///    |s| reaches zeta0: the spring restarts with the rest of the step's sliding.
+///  * passive form: the history is w = sqrt(k) s', which keeps the stored energy |w|^2/2 when
+///    k changes: w grows by sqrt(k) sliding dt, F^T = -sqrt(k) w, breaks at |F^T| = mu F^N.
+///  * step law, BSHP96 (39): F^T = -min(gamma_s m_eff |v|, mu F^N) v/|v|; no history.
+/// With update = false (LAMMPS's setup) the history is left as it is. Writes F^T into `force`.
+void tangential_step(const TangentialModel& model, double normal_force, double effective_mass, const double sliding[3],
+                     double dt, bool update, double history[3], double force[3]);
+
 /// Checks the parameters (mu >= 0; zeta0 > 0 for the asperity law, gamma_s >= 0 for the
 /// step law; 0 < kappa <= 1); InvalidArgument names the offending one.
 void validate(const TangentialModel& model);

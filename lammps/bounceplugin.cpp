@@ -1,0 +1,28 @@
+/* The LAMMPS plugin of bounce: `plugin load bounceplugin.so` registers pair_style bounce
+   (docs/lammps.md). */
+
+#include "lammpsplugin.h"
+#include "version.h"
+
+#include "pair_bounce.h"
+
+using namespace LAMMPS_NS;
+
+static Pair *bounce_creator(LAMMPS *lmp)
+{
+  return new PairBounce(lmp);
+}
+
+extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+{
+  lammpsplugin_t plugin;
+  auto register_plugin = (lammpsplugin_regfunc) regfunc;
+  plugin.version = LAMMPS_VERSION;
+  plugin.style = "pair";
+  plugin.name = "bounce";
+  plugin.info = "bounce's contact laws for colliding grains (docs/lammps.md)";
+  plugin.author = "the bounce developers";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &bounce_creator;
+  plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
+}

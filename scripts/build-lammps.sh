@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Build the LAMMPS that bounce's plugin runs in (docs/lammps.md), cached outside the clone.
+#
+#   scripts/build-lammps.sh            prints the LAMMPS source directory (src/) on its last line
+#
+# Debian's `lammps` binary has no PLUGIN package and liblammps-dev's headers do not compile
+# as shipped (fmt 9, no neigh_request.h), so this fetches Debian's source package of the same
+# version with apt's source download, through a private sources list in the cache (the
+# machine's apt configuration is not touched), and builds it with GRANULAR + PLUGIN + MPI as
+# a shared library. The build is kept under $BOUNCE_CACHE (default ~/.cache/bounce), keyed by
+# the Debian version: a second run finds it and only prints the path.
+set -euo pipefail
+
+version="20220106.git7586adbb6a+ds1-2"   # Debian bookworm's lammps
+suite="bookworm"
+cache="${BOUNCE_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/bounce}/lammps-${version}"
+jobs="${JOBS:-$(nproc 2>/dev/null || echo 2)}"
+log() { echo "bounce lammps: $*" >&2; }
+
+if [ -f "$cache/ok" ] && [ -x "$cache/build/lmp" ]; then
+  log "cached build in $cache"
+  echo "$cache/src/src"
+  exit 0
+fi
+
+# The Debian mirror the machine already uses (deb822 or one-line sources), else deb.debian.org.
+mirror() {
+  local uri=""
+  if compgen -G "/etc/apt/sources.list.d/*.sources" >/dev/null; then
+    uri=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/*.sources 2>/dev/null | grep -v security || true)
+  fi
+  if [ -z "$uri" ] && [ -f /etc/apt/sources.list ]; then
+    uri=$(awk '$1 == "deb" && $0 !~ /security/ {for (i = 2; i <= NF; i++) if ($i ~ /^https?:/) {print $i; exit}}' /etc/apt/sources.list || true)
+  fi
+  echo "${uri:-http://deb.debian.org/debian}"
+}
+
+mkdir -p "$cache"
+download="$cache/download"
+if ! compgen -G "$download/lammps_*.orig.tar.xz" >/dev/null; then
+  rm -rf "$download" && mkdir -p "$download/lists/partial"
+  echo "deb-src $(mirror) $suite main" > "$download/sources.list"
+  apt_opts=(-o "Dir::Etc::sourcelist=$download/sources.list" -o "Dir::Etc::sourceparts=-"
+            -o "Dir::State::Lists=$download/lists" -o "APT::Sandbox::User=root")
+  log "fetching Debian's lammps $version source ($(cat "$download/sources.list"))"
+  apt-get "${apt_opts[@]}" update -qq >&2
+  (cd "$download" && apt-get "${apt_opts[@]}" source --download-only -qq "lammps=$version" >&2)
+fi
+if [ ! -d "$cache/src/src" ]; then
+  log "unpacking"
+  rm -rf "$cache/src.tmp" && mkdir -p "$cache/src.tmp"
+  tar -xJf "$download"/lammps_*.orig.tar.xz -C "$cache/src.tmp" --strip-components=1
+  mv "$cache/src.tmp" "$cache/src"
+fi
+
+log "configuring and building (core + GRANULAR + PLUGIN + MPI, ~440 files; a few minutes on 2 cores)"
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S "$cache/src/cmake" -B "$cache/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DBUILD_SHARED_LIBS=ON -DBUILD_MPI=ON -DBUILD_OMP=OFF -DLAMMPS_EXCEPTIONS=ON \
+  -DPKG_GRANULAR=ON -DPKG_PLUGIN=ON \
+  -DWITH_JPEG=OFF -DWITH_PNG=OFF -DWITH_FFMPEG=OFF -DWITH_GZIP=OFF "${launcher[@]}" >"$cache/configure.log" 2>&1 ||
+  { tail -30 "$cache/configure.log" >&2; exit 1; }
+cmake --build "$cache/build" -j "$jobs" >"$cache/build.log" 2>&1 || { tail -40 "$cache/build.log" >&2; exit 1; }
+touch "$cache/ok"
+log "built $cache/build/lmp"
+echo "$cache/src/src"
