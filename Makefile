@@ -10,6 +10,10 @@
 #                    AddressSanitizer and UndefinedBehaviorSanitizer in build-asan
 #   make fuzz        each fuzz target for FUZZ_SECONDS (default 600) in build-asan
 #                    (docs/hardening.md)
+#   make lammps      LAMMPS 20220106 from Debian's source package (GRANULAR + PLUGIN + MPI),
+#                    cached in ~/.cache/bounce, and build/lammps/bounceplugin.so against it;
+#                    build/lammps/lmp runs it, and `make test` then runs the LAMMPS tests
+#                    (docs/lammps.md)
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
@@ -26,7 +30,7 @@ SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_aft
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 .PHONY: all build deps deps-sanitize configure test demo bench check-long lint clean \
-        build-sanitize test-sanitize fuzz
+        build-sanitize test-sanitize fuzz lammps
 
 all: build
 
@@ -69,6 +73,14 @@ test-sanitize: deps-sanitize
 fuzz: deps-sanitize
 	@$(MAKE) --no-print-directory build-sanitize
 	$(SANITIZE_ENV) ./fuzz/run.sh --keep-going --seconds $(FUZZ_SECONDS) $(ASAN_DIR) $(FUZZ_TARGETS)
+
+# The LAMMPS build (scripts/build-lammps.sh prints its src/ folder) and the plugin against it.
+lammps: deps
+	@./scripts/install-deps.sh xz-utils
+	@$(MAKE) --no-print-directory configure
+	@src=$$(./scripts/build-lammps.sh) && cmake -S . -B $(BUILD_DIR) -DLAMMPS_SOURCE_DIR="$$src" >/dev/null
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+	@echo "bounce: $(BUILD_DIR)/lammps/lmp and $(BUILD_DIR)/lammps/bounceplugin.so (docs/lammps.md)"
 
 demo: deps
 	@$(MAKE) --no-print-directory build

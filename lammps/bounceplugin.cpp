@@ -16,13 +16,13 @@ static Pair *bounce_creator(LAMMPS *lmp)
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
   lammpsplugin_t plugin;
-  auto register_plugin = (lammpsplugin_regfunc) regfunc;
+  auto register_plugin = reinterpret_cast<lammpsplugin_regfunc>(regfunc);
   plugin.version = LAMMPS_VERSION;
   plugin.style = "pair";
   plugin.name = "bounce";
   plugin.info = "bounce's contact laws for colliding grains (docs/lammps.md)";
   plugin.author = "the bounce developers";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &bounce_creator;
+  plugin.creator.v1 = reinterpret_cast<lammpsplugin_factory1 *>(&bounce_creator);
   plugin.handle = handle;
   (*register_plugin)(&plugin, lmp);
 }

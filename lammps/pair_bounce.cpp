@@ -44,6 +44,14 @@ constexpr int last_force = 3;
 constexpr double inside = 1e-6;
 const char *const dummy_id = "NEIGH_HISTORY_BOUNCE_DUMMY";
 const char *const history_id = "NEIGH_HISTORY_BOUNCE";
+// The normal force of a contact law (positive: repulsive); under the `force` end rule it is
+// never attractive (the contact has ended where it first vanished).
+double normal_force(const bounce::models::DemModel &law, const bounce::models::ContactGeometry &g, double overlap,
+                    double rate)
+{
+  const double f = law.normal->force(g, overlap, rate);
+  return law.end_rule == bounce::models::EndRule::force && f < 0.0 ? 0.0 : f;
+}
 }  // namespace
 
 // The law of one type pair, and what the user typed for it (types I I and J J with the same
@@ -53,7 +61,7 @@ struct PairBounce::TypePair {
   std::string inputs;
 };
 
-PairBounce::PairBounce(LAMMPS *lmp) : Pair(lmp), fix_history_(nullptr)
+PairBounce::PairBounce(LAMMPS *instance) : Pair(instance), fix_history_(nullptr)
 {
   single_enable = 0;
   nondefault_history_transfer = 1;
@@ -252,7 +260,7 @@ void PairBounce::compute(int eflag, int vflag)
   const bool update_history = !update->setupflag;
   const bool corrected = corrected_ && update_history;  // setup: whole-step velocities
   const double dt = update->dt;
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+  double **x = atom->x, **v = atom->v, **f = atom->f, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *type = atom->type;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
@@ -302,8 +310,8 @@ void PairBounce::compute(int eflag, int vflag)
         // Released inside the step, theta dt after the last one.
         const double theta = before > overlap ? std::clamp((before - release) / (before - overlap), 0.0, 1.0) : 0.0;
         const double last = history[last_force];
-        const double middle = law.normal->force(g, 0.5 * (before + release), -vn);
-        const double end = law.normal->force(g, release + inside * (before - release), -vn);
+        const double middle = normal_force(law, g, 0.5 * (before + release), -vn);
+        const double end = normal_force(law, g, release + inside * (before - release), -vn);
         fn = theta * (last + 4.0 * middle + end) / 6.0 - 0.5 * last;
         touch[jj] = 0;
         for (int k = 0; k < history_size; k++) history[k] = 0.0;
@@ -311,15 +319,14 @@ void PairBounce::compute(int eflag, int vflag)
         touch[jj] = 1;
         // The normal force (positive: repulsive) at overlap radsum - r and its rate.
         const double rate = -vn - (corrected ? 0.5 * dt * history[last_force] / g.effective_mass : 0.0);
-        fn = law.normal->force(g, overlap, rate);
-        if (law.end_rule == bounce::models::EndRule::force && fn < 0.0) fn = 0.0;
+        fn = normal_force(law, g, overlap, rate);
         if (update_history) history[last_force] = fn;
         if (law.tangential) tangential(law, n, vr, vn, i, j, g, fn, dt, update_history, history, ft);
         // Formed inside the step, phi dt before now (a whole step if it overlapped already).
         if (corrected && !touching) {
           const double phi = before < 0.0 ? overlap / (overlap - before) : 1.0;
-          const double first = law.normal->force(g, inside * overlap, rate);
-          const double middle = law.normal->force(g, 0.5 * overlap, rate);
+          const double first = normal_force(law, g, inside * overlap, rate);
+          const double middle = normal_force(law, g, 0.5 * overlap, rate);
           fn = phi * (first + 4.0 * middle + fn) / 6.0 + 0.5 * fn;
         }
       }

@@ -1,0 +1,126 @@
+"""Running LAMMPS with bounce's plugin, and bounce's CLI beside it, for the validation tests
+(tests/lammps, docs/lammps.md). Paths come from the environment CTest sets: BOUNCE_LMP (the
+`lmp` built with PLUGIN), BOUNCE_PLUGIN (bounceplugin.so), BOUNCE_CLI (bin/bounce)."""
+import json
+import math
+import os
+import re
+import subprocess
+import tempfile
+
+LMP = os.environ.get("BOUNCE_LMP", "")
+PLUGIN = os.environ.get("BOUNCE_PLUGIN", "")
+CLI = os.environ.get("BOUNCE_CLI", "")
+
+
+def bounce(*args):
+    """`bounce collide ... --json` as a dict."""
+    out = subprocess.run([CLI, "collide", *args, "--json"], capture_output=True, text=True, check=True)
+    return json.loads(out.stdout)
+
+
+def cli_args(options):
+    """{"material": "ice-bshp96", "A": 1e-5} -> ["--material", "ice-bshp96", "--A", "1e-05"]."""
+    out = []
+    for key, value in options.items():
+        out += ["--" + key.replace("_", "-"), str(value)]
+    return out
+
+
+def coeff_args(options):
+    """The same options as pair_coeff's key value pairs."""
+    return " ".join(f"{key} {value}" for key, value in options.items())
+
+
+def run_lammps(script, cores=1, check=True):
+    """Runs an input script (text); returns (returncode, stdout + stderr)."""
+    with tempfile.TemporaryDirectory() as work:
+        path = os.path.join(work, "in.test")
+        with open(path, "w") as f:
+            f.write(script)
+        # Line-buffered: a LAMMPS error ends in MPI_Abort, which would drop a full pipe buffer.
+        command = ["stdbuf", "-oL", "-eL", LMP, "-in", path, "-log", "none"]
+        if cores > 1:
+            command = ["mpirun", "-np", str(cores), "--oversubscribe"] + command
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1")
+        done = subprocess.run(command, capture_output=True, text=True, cwd=work, env=env, timeout=900)
+    output = done.stdout + done.stderr
+    if check and done.returncode != 0:
+        raise RuntimeError(f"lmp failed ({done.returncode}):\n{output[-3000:]}")
+    return done.returncode, output
+
+
+def printed(output, name):
+    """The number after `name` in a line LAMMPS printed ("COR 0.5486")."""
+    match = re.findall(rf"^{name} (\S+)$", output, re.M)
+    if not match:
+        raise RuntimeError(f"no {name} in:\n{output[-3000:]}")
+    return float(match[-1])
+
+
+def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", coeff=None, radius2=None,
+            tangential_velocity=0.0):
+    """A two-sphere collision in LAMMPS: `pair` holds the bodies (material[, material2],
+    radius[, radius2]) as for `bounce collide`, `model` the model's options. The spheres touch
+    at t = 0 with relative normal speed `velocity` (and tangential `tangential_velocity`) in
+    their centre-of-mass frame; dt = t_c / steps_per_contact with bounce's contact time.
+    Returns (eps^N from LAMMPS, eps^T from LAMMPS, bounce's record)."""
+    options = dict(pair, **model)
+    extra = ["--tangential-velocity", str(tangential_velocity)] if tangential_velocity else []
+    ref = bounce(*cli_args(options), "--velocity", str(velocity), *extra)
+    b1, b2 = ref["pair"]["body1"], ref["pair"]["body2"]
+    r1, r2, m1, m2 = b1["radius"], b2["radius"], b1["mass"], b2["mass"]
+    dt = ref["contact_time"] / steps_per_contact
+    steps = int(3 * steps_per_contact)
+    box = 4 * (r1 + r2)
+    v1, v2 = velocity * m2 / (m1 + m2), -velocity * m1 / (m1 + m2)
+    u1, u2 = tangential_velocity * m2 / (m1 + m2), -tangential_velocity * m1 / (m1 + m2)
+    materials = {k: v for k, v in pair.items() if not k.startswith("radius")}
+    if coeff is None:
+        coeff = "bounce " + model_name(model) + " " + coeff_args(
+            {k: v for k, v in dict(materials, **model).items() if k != "model"})
+    style, coeffs = coeff.split(" ", 1)
+    plugin = f"plugin load {PLUGIN}" if pair_style.startswith("bounce") else ""
+    script = f"""
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block {-box} {box} {-box} {box} {-box} {box}
+create_box 2 box
+create_atoms 1 single {-r1} 0 0
+create_atoms 2 single {r2} 0 0
+set atom 1 diameter {2 * r1} mass {m1}
+set atom 2 diameter {2 * r2} mass {m2}
+velocity all set 0 0 0
+set atom 1 vx {v1!r} vy {u1!r}
+set atom 2 vx {v2!r} vy {u2!r}
+{plugin}
+pair_style {pair_style}
+pair_coeff * * {coeffs}
+neighbor {max(r1, r2) * 0.1} bin
+timestep {dt!r}
+fix 1 all nve/sphere
+compute spin all property/atom omegaz
+variable gn equal vx[2]-vx[1]
+variable gt equal (vy[1]-vy[2])+({r1!r}*c_spin[1]+{r2!r}*c_spin[2])
+thermo_style custom step v_gn v_gt
+thermo {steps}
+run {steps}
+print "EPSN $(v_gn/{velocity!r}:%.15g)"
+print "EPST $(v_gt:%.15g)"
+"""
+    _, output = run_lammps(script)
+    eps_t = printed(output, "EPST") / tangential_velocity if tangential_velocity else float("nan")
+    return printed(output, "EPSN"), eps_t, ref
+
+
+def model_name(model):
+    return model["model"]
+
+
+def order(errors, factor=2.0):
+    """The convergence orders between successive errors of steps shrinking by `factor`."""
+    return [math.log(abs(a) / abs(b)) / math.log(factor) for a, b in zip(errors, errors[1:])]

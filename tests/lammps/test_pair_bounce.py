@@ -1,0 +1,139 @@
+"""pair_style bounce in LAMMPS against bounce's own collisions (docs/lammps.md, Validation).
+
+The reference is `bounce collide` (its integration error is below 1e-9 here). LAMMPS's
+velocity Verlet makes a DEM collision's COR converge with the time step: the tolerances below
+are the issue's bounds, and each test also checks that the error falls as dt does. The
+measured numbers are in docs/lammps.md."""
+import math
+import subprocess
+
+import pytest
+
+import lammps_runs as L
+
+# Unlike materials and radii (and a like pair): the laws are polydisperse-exact.
+ICE_QUARTZ = dict(material="ice-bshp96", material2="quartz", radius=0.01, radius2=0.004)
+ICE_ICE = dict(material="ice-bshp96", radius=0.01)
+
+
+@pytest.mark.parametrize("pair,model", [
+    (ICE_QUARTZ, dict(model="viscoelastic", A=1e-5)),
+    (ICE_QUARTZ, dict(model="viscoelastic", A=1e-5, contact_end="force")),
+    (ICE_ICE, dict(model="viscoelastic", A=2e-6)),
+    (ICE_QUARTZ, dict(model="hertz")),
+    (ICE_QUARTZ, dict(model="viscoelastic-shifted", A=1e-5)),
+    (ICE_QUARTZ, dict(model="viscoelastic-shifted", A=1e-5, contact_end="force")),
+], ids=["viscoelastic-overlap", "viscoelastic-force", "viscoelastic-like", "hertz", "shifted-overlap",
+        "shifted-force"])
+def test_head_on_force_laws(pair, model):
+    """Within 2e-5 of bounce at dt = t_c/1000 (the issue's bound; measured <= 6e-6), and
+    converging: at t_c/4000 the error is at least 4x smaller than at t_c/250 (a mean order of
+    0.5 or more over 16x in dt; measured 1.2-2, docs/lammps.md: the Hertz law's sqrt(xi) at
+    both ends of the contact keeps it below 2, and the errors of a few 1e-6 wander)."""
+    errors = []
+    for n in (250, 1000, 4000):
+        eps, _, ref = L.head_on(pair, model, 1.0, steps_per_contact=n)
+        errors.append(eps - ref["cor"])
+    assert abs(errors[1]) <= 2e-5, errors
+    if abs(errors[0]) > 1e-9:  # hertz: ~1e-11 at t_c/1000, round-off
+        assert abs(errors[-1]) * 4 <= abs(errors[0]), errors
+
+
+def sticking_velocity(pair, model):
+    out = subprocess.run([L.CLI, "sticking", *L.cli_args(dict(pair, **model)), "--json"], capture_output=True,
+                         text=True, check=True)
+    import json
+    return json.loads(out.stdout)["sticking_velocity"]
+
+
+@pytest.mark.parametrize("end", ["fold", "pull-off"])
+@pytest.mark.parametrize("pair", [dict(material="water-ice", radius=1e-6),
+                                  dict(material="water-ice", material2="quartz", radius=1e-6, radius2=2e-6)],
+                         ids=["like", "unlike"])
+def test_head_on_jkr_viscoelastic(end, pair):
+    """jkr-viscoelastic: snap-on, the neck beyond touching, the end at the fold or at pull-off.
+    Within 1e-3 of bounce at 1.1x and 2x the sticking velocity at dt = t_c/1000 (the issue's
+    bound; measured <= 2e-5), and converging."""
+    model = dict(model="jkr-viscoelastic", tvis=1e-11, contact_end=end)
+    v_s = sticking_velocity(pair, model)
+    for factor in (1.1, 2.0):
+        errors = []
+        for n in (250, 1000):
+            eps, _, ref = L.head_on(pair, model, factor * v_s, steps_per_contact=n)
+            assert ref["outcome"] == "bounce"
+            errors.append(eps - ref["cor"])
+        assert abs(errors[-1]) <= 1e-3, (factor, errors)
+        assert abs(errors[-1]) < abs(errors[0]), (factor, errors)
+
+
+def test_plain_integration_is_lammps_own_viscoelastic():
+    """With `integration plain` the plugin computes what LAMMPS's own pair granular computes for
+    BSHP96's law mapped as docs/lammps.md says (hertz/material E* mixing, eta_n0 = 2 A E*/m_eff,
+    damping viscoelastic): the same COR to round-off, with its first-order error (5.5e-5 here at
+    t_c/1000, for this strongly damped pair: eps = 0.55); the default (corrected) integration is
+    10x closer to bounce (measured 5.7e-6)."""
+    pair, model = ICE_ICE, dict(model="viscoelastic", A=1e-5)
+    ref = L.bounce(*L.cli_args(dict(pair, **model)), "--velocity", "1")
+    e, nu = 1e10, 0.3  # ice-bshp96
+    e_star = e / (2 * (1 - nu * nu))
+    eta = 2 * 1e-5 * e_star / ref["pair"]["effective_mass"]
+    stock = f"granular hertz/material {e!r} {eta!r} {nu} tangential linear_nohistory 0 0 damping viscoelastic"
+    eps_stock, _, _ = L.head_on(pair, model, 1.0, pair_style="granular", coeff=stock)
+    eps_plain, _, _ = L.head_on(pair, model, 1.0, pair_style="bounce integration plain")
+    eps_corrected, _, _ = L.head_on(pair, model, 1.0)
+    assert abs(eps_plain - eps_stock) <= 1e-12, (eps_plain, eps_stock)
+    assert abs(eps_corrected - ref["cor"]) < abs(eps_plain - ref["cor"]) / 3
+
+
+COLLISION = """
+units si
+atom_style sphere
+comm_modify vel yes
+region box block -1 1 -1 1 -1 1
+create_box 2 box
+create_atoms 1 single 0 0 0
+create_atoms 2 single 0.5 0 0
+plugin load {plugin}
+pair_style {style}
+{coeffs}
+run 0
+"""
+
+
+@pytest.mark.parametrize("coeffs,expected", [
+    ("pair_coeff * * nonsense material ice-bshp96", "model = nonsense is invalid"),
+    ("pair_coeff * * viscoelastic material ice-bshp96", "A = (not given) is invalid"),
+    ("pair_coeff * * viscoelastic material ice-bshp96 A -1", "A = -1 is invalid: expected dissipative constant A [s] >= 0"),
+    ("pair_coeff * * viscoelastic material ice-bshp96 A 1e-5 k 0.1", "no k with model viscoelastic"),
+    ("pair_coeff * * viscoelastic material ice-bshp96 A 1e-5 radius 0.01", "radius = 0.01 is invalid"),
+    ("pair_coeff * * viscoelastic material ice-bshp96 A 1e-5 yield 1e7", "yield = 1e7 is invalid"),
+    ("pair_coeff * * viscoelastic material nosuch A 1e-5", "material = nosuch is invalid"),
+    ("pair_coeff * * viscoelastic material ice-bshp96 A", "A has no value"),
+    ("pair_coeff * * viscoelastic material ice-bshp96 A 1e-5 contact_end pull-off", "contact_end = pull-off"),
+    ("pair_coeff * * krijt material water-ice tvis 1e-11", "model = krijt is invalid"),
+    ("pair_coeff * * jkr-viscoelastic material ice-bshp96 tvis 1e-11", "gamma"),
+    ("pair_coeff 1 1 hertz material ice-bshp96\npair_coeff 2 2 hertz material quartz", "no pair_coeff 1 2"),
+    ("pair_coeff * * hertz material ice-bshp96 E nan", "E = nan is invalid"),
+])
+def test_bad_pair_coeff_stops_lammps_naming_it(coeffs, expected):
+    """The CLI's rules in pair_coeff: LAMMPS stops with an ERROR naming the input."""
+    code, output = L.run_lammps(COLLISION.format(plugin=L.PLUGIN, style="bounce", coeffs=coeffs), check=False)
+    assert code != 0
+    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    assert errors and expected in errors[0], output[-2000:]
+
+
+@pytest.mark.parametrize("style,expected", [("bounce extra", "'extra' is invalid"),
+                                            ("bounce integration fast", "integration = fast is invalid")])
+def test_bad_pair_style(style, expected):
+    code, output = L.run_lammps(COLLISION.format(plugin=L.PLUGIN, style=style, coeffs="pair_coeff * * hertz material steel"),
+                                check=False)
+    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    assert code != 0 and errors and expected in errors[0], output[-2000:]
+
+
+def test_units_must_be_si():
+    script = COLLISION.format(plugin=L.PLUGIN, style="bounce", coeffs="pair_coeff * * hertz material steel")
+    code, output = L.run_lammps(script.replace("units si", "units cgs"), check=False)
+    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    assert code != 0 and errors and "units si" in errors[0], output[-2000:]
