@@ -320,8 +320,9 @@ void PairBounce::compute(int eflag, int vflag)
         // The normal force (positive: repulsive) at overlap radsum - r and its rate.
         const double rate = -vn - (corrected ? 0.5 * dt * history[last_force] / g.effective_mass : 0.0);
         fn = normal_force(law, g, overlap, rate);
+        const double previous = history[last_force];
         if (update_history) history[last_force] = fn;
-        if (law.tangential) tangential(law, n, vr, vn, i, j, g, fn, dt, update_history, history, ft);
+        if (law.tangential) tangential(law, n, vr, vn, i, j, g, fn, touching ? previous : fn, dt, update_history, history, ft);
         // Formed inside the step, phi dt before now (a whole step if it overlapped already).
         if (corrected && !touching) {
           const double phi = before < 0.0 ? overlap / (overlap - before) : 1.0;
@@ -336,13 +337,16 @@ void PairBounce::compute(int eflag, int vflag)
       f[i][1] += fy;
       f[i][2] += fz;
       const double tor[3] = {n[1] * ft[2] - n[2] * ft[1], n[2] * ft[0] - n[0] * ft[2], n[0] * ft[1] - n[1] * ft[0]};
-      const double arm_i = radius[i] - 0.5 * overlap;
+      // The lever arm is the radius, as in BSHP96's (10) and in the contact points' velocity
+      // above (pair granular's R - xi/2 here would make the tangential force's power differ
+      // from -F^T . sliding by O(xi/R), and eps^T by ~1e-3 from bounce's).
+      const double arm_i = radius[i];
       for (int k = 0; k < 3; k++) torque[i][k] -= arm_i * tor[k];
       if (newton_pair || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
         f[j][2] -= fz;
-        const double arm_j = radius[j] - 0.5 * overlap;
+        const double arm_j = radius[j];
         for (int k = 0; k < 3; k++) torque[j][k] -= arm_j * tor[k];
       }
       if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
@@ -353,7 +357,7 @@ void PairBounce::compute(int eflag, int vflag)
 // BSHP96's tangential law of a contact (models::tangential_step) with the contact points'
 // relative velocity in the tangent plane, as pair granular takes it.
 void PairBounce::tangential(const bounce::models::DemModel &law, const double n[3], const double vr[3], double vn,
-                            int i, int j, const bounce::models::ContactGeometry &g, double fn, double dt, bool update_history,
+                            int i, int j, const bounce::models::ContactGeometry &g, double fn, double previous, double dt, bool update_history,
                             double *history, double ft[3]) const
 {
   const double *radius = atom->radius;
@@ -373,6 +377,6 @@ void PairBounce::tangential(const bounce::models::DemModel &law, const double n[
     if (after > 0.0)
       for (int k = 0; k < 3; k++) history[k] *= before / after;
   }
-  bounce::models::tangential_step(*law.tangential, fn, g.effective_mass, sliding, dt, update_history,
+  bounce::models::tangential_step(*law.tangential, fn, previous, g.effective_mass, sliding, dt, update_history,
                                   history, ft);
 }

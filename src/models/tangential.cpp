@@ -57,8 +57,9 @@ void grow_with_breaks(double state[3], const double step[3], double limit) {
 }
 }  // namespace
 
-void tangential_step(const TangentialModel& t, double normal_force, double effective_mass, const double sliding[3],
-                     double dt, bool update, double h[3], double force[3]) {
+void tangential_step(const TangentialModel& t, double normal_force, double previous_normal_force,
+                     double effective_mass, const double sliding[3], double dt, bool update, double h[3],
+                     double force[3]) {
   const double fn = std::max(normal_force, 0.0);  // asperities carry no shear in tension
   if (t.law == TangentialLaw::step) {  // BSHP96 (39)
     const double v = norm(sliding);
@@ -77,7 +78,9 @@ void tangential_step(const TangentialModel& t, double normal_force, double effec
   }
   const double root = std::sqrt(stiffness);  // passive: the history is sqrt(k) times the extension
   if (update) {
-    const double step[3] = {root * sliding[0] * dt, root * sliding[1] * dt, root * sliding[2] * dt};
+    const double before = std::sqrt(t.friction * std::max(previous_normal_force, 0.0) / t.asperity_size);
+    const double mean = 0.5 * (before + root);  // the step's sqrt(k), at its middle
+    const double step[3] = {mean * sliding[0] * dt, mean * sliding[1] * dt, mean * sliding[2] * dt};
     grow_with_breaks(h, step, root * t.asperity_size);
   }
   for (int k = 0; k < 3; ++k) force[k] = -root * h[k];

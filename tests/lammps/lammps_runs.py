@@ -104,17 +104,33 @@ neighbor {max(r1, r2) * 0.1} bin
 timestep {dt!r}
 fix 1 all nve/sphere
 compute spin all property/atom omegaz
-variable gn equal vx[2]-vx[1]
-variable gt equal (vy[1]-vy[2])+({r1!r}*c_spin[1]+{r2!r}*c_spin[2])
-thermo_style custom step v_gn v_gt
+variable w1 equal c_spin[1]
+variable w2 equal c_spin[2]
+thermo_style custom step v_w1 v_w2
 thermo {steps}
 run {steps}
-print "EPSN $(v_gn/{velocity!r}:%.15g)"
-print "EPST $(v_gt:%.15g)"
+print "STATE $(x[1]:%.17g) $(y[1]:%.17g) $(vx[1]:%.17g) $(vy[1]:%.17g) $(v_w1:%.17g) $(x[2]:%.17g) $(y[2]:%.17g) $(vx[2]:%.17g) $(vy[2]:%.17g) $(v_w2:%.17g)"
 """
     _, output = run_lammps(script)
-    eps_t = printed(output, "EPST") / tangential_velocity if tangential_velocity else float("nan")
-    return printed(output, "EPSN"), eps_t, ref
+    state = re.findall(r"^STATE (.*)$", output, re.M)
+    if not state:
+        raise RuntimeError(f"no final state in:\n{output[-3000:]}")
+    x1, y1, vx1, vy1, w1, x2, y2, vx2, vy2, w2 = map(float, state[-1].split())
+    # The frame of the contact as it ended: the line of centres at separation (bounce's contact
+    # time; after it the centres fly straight), not the x axis: sliding turns it by about
+    # g^T t_c / (R1 + R2), which would otherwise mix g^N into g^T (BSHP96's geometry is fixed).
+    flight = steps * dt - ref["contact_time"]
+    dx, dy = (x1 - vx1 * flight) - (x2 - vx2 * flight), (y1 - vy1 * flight) - (y2 - vy2 * flight)
+    norm = math.hypot(dx, dy)
+    nx, ny = dx / norm, dy / norm  # from 2 to 1 (initially -x)
+    tx, ty = ny, -nx               # n x z: initially +y
+    # Contact points' relative velocity: v1 + w1 z x (-R1 n) - (v2 + w2 z x (R2 n)).
+    gx = (vx1 - vx2) + (w1 * r1 + w2 * r2) * ny
+    gy = (vy1 - vy2) - (w1 * r1 + w2 * r2) * nx
+    eps_n = (gx * nx + gy * ny) / velocity
+    eps_t = (gx * tx + gy * ty) / tangential_velocity if tangential_velocity else float("nan")
+    return eps_n, eps_t, ref
+
 
 
 def model_name(model):

@@ -66,6 +66,32 @@ def test_head_on_jkr_viscoelastic(end, pair):
         assert abs(errors[-1]) < abs(errors[0]), (factor, errors)
 
 
+# BSHP96 Fig 2's regimes (docs/tangential.md): BSHP96's ice, A = 1e-6 s, mu = sqrt(zeta0/R_eff).
+def oblique(zeta0, form, normal, tangential):
+    return dict(model="viscoelastic", A=1e-6, friction=math.sqrt(zeta0), asperity=zeta0 * 0.005,
+                asperity_form=form), normal, tangential
+
+
+@pytest.mark.parametrize("model,normal,tangential", [
+    oblique(2e-4, "published", 0.1, 0.1),     # sliding: eps^T 0.951
+    oblique(2e-4, "published", 0.1, 0.001),   # a linear spring below g^T_cr: 0.390
+    oblique(1e-3, "published", 0.1, 0.001),   # the same, zeta0 = 1e-3 R_eff: 0.711
+    oblique(2e-4, "passive", 0.1, 0.001),     # the energy-keeping form: 0.469
+    oblique(2e-4, "published", 1.0, 0.1),     # breaks during the contact: 0.520
+], ids=["sliding", "spring", "spring-large-asperity", "spring-passive", "breaking"])
+def test_oblique_asperity_law(model, normal, tangential):
+    """eps^T within 1e-3 of `bounce collide --tangential-velocity` at dt = t_c/2000 (the issue's
+    bound; measured <= 2.5e-4, the asperity breaks' timing being the largest part), and eps^N
+    unchanged by the tangential law (within 2e-5, as head-on). eps^T is taken in the frame of
+    the line of centres at separation (BSHP96's geometry is fixed; a DEM's turns). At
+    g^N = 1 m/s the spring regime differs by 1.5e-3 whatever dt: the DEM's normal force turns
+    with the line of centres, an O(xi0/R) coupling BSHP96 leave out (docs/lammps.md)."""
+    eps_n, eps_t, ref = L.head_on(dict(material="ice-bshp96", radius=0.01), model, normal, steps_per_contact=2000,
+                                  tangential_velocity=tangential)
+    assert abs(eps_t - ref["cor_tangential"]) <= 1e-3, (eps_t, ref["cor_tangential"])
+    assert abs(eps_n - ref["cor"]) <= 2e-5, (eps_n, ref["cor"])
+
+
 def test_plain_integration_is_lammps_own_viscoelastic():
     """With `integration plain` the plugin computes what LAMMPS's own pair granular computes for
     BSHP96's law mapped as docs/lammps.md says (hertz/material E* mixing, eta_n0 = 2 A E*/m_eff,

@@ -34,11 +34,14 @@ struct TangentialModel {
 ///    F^T = -k s with k = mu F^N / zeta0; s grows by sliding * dt, and an asperity breaks when
 ///    |s| reaches zeta0: the spring restarts with the rest of the step's sliding.
 ///  * passive form: the history is w = sqrt(k) s', which keeps the stored energy |w|^2/2 when
-///    k changes: w grows by sqrt(k) sliding dt, F^T = -sqrt(k) w, breaks at |F^T| = mu F^N.
+///    k changes: w grows by sqrt(k) sliding dt with the step's mean sqrt(k) (from
+///    `previous_normal_force`, the force a step ago: second order), F^T = -sqrt(k) w, breaks at
+///    |F^T| = mu F^N.
 ///  * step law, BSHP96 (39): F^T = -min(gamma_s m_eff |v|, mu F^N) v/|v|; no history.
 /// With update = false (LAMMPS's setup) the history is left as it is. Writes F^T into `force`.
-void tangential_step(const TangentialModel& model, double normal_force, double effective_mass, const double sliding[3],
-                     double dt, bool update, double history[3], double force[3]);
+void tangential_step(const TangentialModel& model, double normal_force, double previous_normal_force,
+                     double effective_mass, const double sliding[3], double dt, bool update, double history[3],
+                     double force[3]);
 
 /// Checks the parameters (mu >= 0; zeta0 > 0 for the asperity law, gamma_s >= 0 for the
 /// step law; 0 < kappa <= 1); InvalidArgument names the offending one.

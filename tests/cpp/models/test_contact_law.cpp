@@ -116,7 +116,7 @@ TEST(ContactLaw, AsperityLawOverSteps) {
   double h[3] = {0.0, 0.0, 0.0}, f[3];
   const double sliding[3] = {0.0, 0.01, 0.0}, dt = 1e-5;  // 1e-7 m per step
   for (int step = 1; step <= 25; ++step) {
-    models::tangential_step(t, 2.0, 1.0, sliding, dt, true, h, f);
+    models::tangential_step(t, 2.0, 2.0, 1.0, sliding, dt, true, h, f);
     EXPECT_LE(std::abs(f[1]), t.friction * 2.0 * (1.0 + 1e-12));
     const double extension = std::fmod(step * 1e-7, 1e-6);  // breaks every 10 steps
     EXPECT_NEAR(h[1], extension < 1e-13 || 1e-6 - extension < 1e-13 ? 0.0 : extension, 1e-12) << step;
@@ -126,20 +126,20 @@ TEST(ContactLaw, AsperityLawOverSteps) {
   // |F|^2 / (2k) stays, so the force grows by sqrt(2) only.
   const double none[3] = {0.0, 0.0, 0.0};
   double pub[3] = {0.0, 5e-7, 0.0}, fp[3];
-  models::tangential_step(t, 4.0, 1.0, none, dt, true, pub, fp);
+  models::tangential_step(t, 4.0, 4.0, 1.0, none, dt, true, pub, fp);
   EXPECT_NEAR(fp[1], -0.3 * 4.0 * 0.5, 1e-12);
   t.form = models::AsperityForm::passive;
   double passive[3] = {0.0, 0.0, 0.0}, fq[3];
   const double push[3] = {0.0, 0.05, 0.0};
-  models::tangential_step(t, 2.0, 1.0, push, dt, true, passive, fq);  // extension 5e-7 at k = 6e5
+  models::tangential_step(t, 2.0, 2.0, 1.0, push, dt, true, passive, fq);  // extension 5e-7 at k = 6e5
   EXPECT_NEAR(fq[1], -0.3, 1e-12);
-  models::tangential_step(t, 4.0, 1.0, none, dt, true, passive, fq);
+  models::tangential_step(t, 4.0, 4.0, 1.0, none, dt, true, passive, fq);
   EXPECT_NEAR(fq[1], -0.3 * std::sqrt(2.0), 1e-12);
-  models::tangential_step(t, -1.0, 1.0, push, dt, true, passive, fq);  // attractive: no shear
+  models::tangential_step(t, -1.0, -1.0, 1.0, push, dt, true, passive, fq);  // attractive: no shear
   EXPECT_EQ(fq[1], 0.0);
   // Setup (update = false) leaves the history alone.
   double kept[3] = {1e-7, 2e-7, 0.0};
-  models::tangential_step(t, 2.0, 1.0, push, dt, false, kept, fq);
+  models::tangential_step(t, 2.0, 2.0, 1.0, push, dt, false, kept, fq);
   EXPECT_EQ(kept[0], 1e-7);
   EXPECT_EQ(kept[1], 2e-7);
 }
@@ -152,11 +152,11 @@ TEST(ContactLaw, StepLaw) {
   t.shear_damping = 100.0;
   double h[3] = {0.0, 0.0, 0.0}, f[3];
   const double slow[3] = {0.003, 0.004, 0.0};  // |v| = 0.005: viscous, 100 * 2 * 0.005 = 1 N
-  models::tangential_step(t, 10.0, 2.0, slow, 1e-6, true, h, f);
+  models::tangential_step(t, 10.0, 10.0, 2.0, slow, 1e-6, true, h, f);
   EXPECT_NEAR(f[0], -0.6, 1e-12);
   EXPECT_NEAR(f[1], -0.8, 1e-12);
   const double fast[3] = {3.0, 4.0, 0.0};  // Coulomb: mu F^N = 5 N
-  models::tangential_step(t, 10.0, 2.0, fast, 1e-6, true, h, f);
+  models::tangential_step(t, 10.0, 10.0, 2.0, fast, 1e-6, true, h, f);
   EXPECT_NEAR(std::hypot(f[0], f[1]), 5.0, 1e-12);
 }
 
