@@ -244,11 +244,20 @@ std::function<int()> fit(Options& o) {
   };
 }
 
+std::function<int()> lammps(Options& o) {
+  const bool* json = o.add_flag("json", "print JSON");
+  return [&o, json] {
+    const Record out = api::lammps_export(o.inputs());
+    *json ? print_json(out) : print_text(out, std::get<std::string>(out.at("script").data()));
+    return 0;
+  };
+}
+
 const std::map<std::string, Setup>& setups() {
   static const std::map<std::string, Setup> table = {
       {"materials", materials}, {"models", models},     {"contact", contact},   {"collide", collide}, {"curve", curve},
       {"analytic", analytic},   {"sticking", sticking}, {"rules", rules},       {"table", ::bounce::cli::table},
-      {"fit", ::bounce::cli::fit}};
+      {"fit", ::bounce::cli::fit},  {"lammps", lammps}};
   return table;
 }
 

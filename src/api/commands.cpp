@@ -130,6 +130,24 @@ CommandSpec fit_command() {
   return c;
 }
 
+CommandSpec lammps_command() {
+  const auto type = [](const char* name, const char* help) {
+    return real_parameter(name, "LAMMPS atom type", "", Range{1.0, 1e6, true, true, false, true}, help);
+  };
+  CommandSpec c{"lammps", "Stock LAMMPS pair_style granular lines that best represent a model (docs/lammps.md)", true, true,
+                {type("type", "the first atom type of the pair_coeff line (default 1)"),
+                 type("type2", "the second atom type (default 1 for like bodies, else 2)")}};
+  c.models = {"viscoelastic", "hertz", "jkr-viscoelastic"};
+  c.models_why = "viscoelastic, hertz or jkr-viscoelastic (the models stock LAMMPS has; pair_style bounce has every "
+                 "other but krijt)";
+  c.unused = {{tangential_parameters(), "none with lammps: stock LAMMPS has no BSHP96 asperity law"},
+              {{"yield"}, "none with lammps: plastic losses are a post-collision rule, not a LAMMPS contact force"},
+              {{"method", "tolerance", "adhesive_tolerance", "curvature_radii", "curvature_radii2", "angle"},
+               "none with lammps: LAMMPS integrates spheres with its own time step"},
+              {{"wall", "rigid_wall"}, "none with lammps: the lines are for two atom types (docs/lammps.md: walls)"}};
+  return c;
+}
+
 std::vector<CommandSpec> make_commands() {
   return {
       {"materials", "List the materials table (K13 table 2 and more)", false, false, {materials_file()}},
@@ -142,6 +160,7 @@ std::vector<CommandSpec> make_commands() {
       {"rules", "Post-collision velocities and spins (BSHP96 (42)-(43)) of JSON encounters", true, true, {}},
       table_command(),
       fit_command(),
+      lammps_command(),
   };
 }
 

@@ -1,10 +1,16 @@
 // LAMMPS's pair_coeff as a front-door command: a pair of materials and a model, by the CLI's
 // names and checked by its rules, made into a DEM contact law (docs/lammps.md).
+#include <cmath>
+#include <string>
+#include <vector>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "binding.hpp"
 #include "bounce/api/front_door.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/pair_parameters.hpp"
 
@@ -50,6 +56,107 @@ models::DemModel contact_law(const Inputs& inputs) {
   pair_inputs["density"] = 1.0;
   const Pair pair = bounce::make_pair(bind_parameters(pair_parameters(), pair_inputs, "the pair"));
   return models::make_contact_law(pair, b.model, b.model_parameters);
+}
+
+// --- bounce lammps: the stock pair_style granular lines that best represent a model ------
+
+namespace {
+
+// The shortest text that reads back as the same double.
+std::string exact(double x) { return fmt::format("{}", x); }
+
+struct Export {
+  std::vector<std::string> lines;
+  std::vector<std::string> notes;
+  Record mapping;
+};
+
+// The Hertz constant: LAMMPS's hertz/material (and jkr) mix E and nu of the two types as
+// bounce does for like types; an I J line carries one E and nu, so it gets E = 2 E* (1 - nu^2).
+std::string moduli(const Pair& pair, bool like, Export& out) {
+  const Material& m1 = pair.body1().material;
+  if (like) return fmt::format("{} {{damping}} {}", exact(m1.youngs_modulus), exact(m1.poisson_ratio));
+  const double nu = m1.poisson_ratio;
+  out.notes.push_back(fmt::format("unlike materials: E = 2 E* (1 - nu^2) with nu = {} gives LAMMPS's mixing of one "
+                                  "E and nu bounce's E* = {} Pa",
+                                  format_value(nu), format_value(pair.effective_modulus())));
+  return fmt::format("{} {{damping}} {}", exact(2.0 * pair.effective_modulus() * (1.0 - nu * nu)), exact(nu));
+}
+
+Export export_lines(const Case& c, long type1, long type2) {
+  Export out;
+  const Pair& pair = c.pair;
+  const models::Model& model = c.model;
+  const bool like = pair.body1().material.youngs_modulus == pair.body2().material.youngs_modulus &&
+                    pair.body1().material.poisson_ratio == pair.body2().material.poisson_ratio;
+  const double a = model.dissipative_constant.value_or(0.0);
+  const double m = pair.effective_mass();
+  // BSHP96 (24) / K13 (19): F_D = 2 A E* a xi'; LAMMPS's damping viscoelastic is eta_n0 a m_eff v_n.
+  const double eta = 2.0 * a * pair.effective_modulus() / m;
+  out.mapping.set("E_star", pair.effective_modulus()).set("eta_n0", eta).set("effective_mass", m);
+  const std::string head = fmt::format("pair_coeff {} {} ", type1, type2);
+  std::string coeff;
+  std::string extra;
+  // No tangential force (stock LAMMPS has no BSHP96 law). jkr keeps a history all the same:
+  // LAMMPS 29Sep2021 stops with "Neighbor history overflow" when a jkr contact outlives a
+  // neighbor-list exchange with no history values (linear_nohistory; measured).
+  std::string tangential = "tangential linear_nohistory 0 0";
+  if (model.name == "jkr-viscoelastic") {
+    tangential = "tangential linear_history 0 0 0";
+    const double w = pair.surface_energy().value_or(0.0);
+    out.mapping.set("gamma_lammps", 0.5 * w);
+    coeff = "jkr " + moduli(pair, like, out) + " " + exact(0.5 * w);
+    out.notes.push_back(fmt::format("jkr: LAMMPS's surface energy is half bounce's work of adhesion: {} = {} / 2 "
+                                    "J/m^2 (its force is K13 (9) with w = 2 gamma_LAMMPS)",
+                                    format_value(0.5 * w), format_value(w)));
+    if (model.end_rule == models::EndRule::pull_off) {
+      out.notes.push_back("LAMMPS ends a jkr contact at the pull-off point, as bounce with --contact-end pull-off");
+    } else {
+      out.notes.push_back("NOT REPRESENTED: bounce ends this contact at the JKR fold (K13 (25)); LAMMPS ends it "
+                          "earlier, at the pull-off point: its COR is higher and its sticking velocity lower (as "
+                          "bounce --contact-end pull-off; pair_style bounce has both)");
+    }
+    out.mapping.set("end", "pull-off");
+  } else {
+    coeff = "hertz/material " + moduli(pair, like, out);
+    const bool force = model.end_rule == models::EndRule::force;
+    if (force) extra = " limit_damping";
+    out.mapping.set("end", force ? "force (limit_damping)" : "overlap");
+  }
+  const std::size_t at = coeff.find("{damping}");
+  coeff.replace(at, 9, exact(eta));
+  out.lines.push_back(head + coeff + " damping viscoelastic " + tangential + extra);
+  if (a > 0.0) {
+    out.notes.push_back(fmt::format("eta_n0 = 2 A E* / m_eff = {} 1/s with m_eff = {} kg: exact for this pair's masses "
+                                    "only; other sizes in these types get BSHP96's damping times m_eff / {} (pair_style "
+                                    "bounce is exact for every size)",
+                                    format_value(eta), format_value(m), format_value(m)));
+  }
+  out.notes.push_back("tangential: none (stock LAMMPS has no BSHP96 asperity law; pair_style bounce has it)");
+  return out;
+}
+
+}  // namespace
+
+Record lammps_export(const Inputs& inputs) {
+  const detail::Bound b = detail::bind_inputs(command("lammps"), inputs);
+  const Case c = detail::make_case(b);
+  const long type1 = static_cast<long>(b.own.real("type").value_or(1.0));
+  const bool like_bodies = c.pair.body1().material.youngs_modulus == c.pair.body2().material.youngs_modulus &&
+                           c.pair.body1().material.poisson_ratio == c.pair.body2().material.poisson_ratio &&
+                           c.pair.body1().material.surface_energy == c.pair.body2().material.surface_energy;
+  const long type2 = static_cast<long>(b.own.real("type2").value_or(like_bodies ? 1.0 : 2.0));
+  const Export e = export_lines(c, type1, type2);
+  std::string script = fmt::format("# bounce lammps: model {} as stock LAMMPS (pair_style granular, 29Sep2021)\n",
+                                   c.model.name);
+  for (const std::string& note : e.notes) script += "# " + note + "\n";
+  script += "pair_style granular\n";
+  for (const std::string& line : e.lines) script += line + "\n";
+  Value::List lines(e.lines.begin(), e.lines.end()), notes(e.notes.begin(), e.notes.end());
+  Record out;
+  out.set("model", c.model.name).set("pair_style", "granular").set("pair_coeff", lines).set("notes", notes);
+  out.set("mapping", e.mapping).set("script", script).set("pair", pair_record(c.pair));
+  return out;
 }
 
 }  // namespace bounce::api

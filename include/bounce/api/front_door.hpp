@@ -149,6 +149,11 @@ const CommandSpec& pair_coeff_command();
 /// CLI's (InvalidArgument naming the input).
 models::DemModel contact_law(const Inputs& inputs);
 
+/// `bounce lammps`: the stock `pair_style granular` lines that best represent a model for a
+/// pair (eta_n0 = 2 A E*/m_eff, gamma_LAMMPS = w/2, limit_damping for the force rule), with
+/// notes saying what stock LAMMPS cannot represent (docs/lammps.md).
+Record lammps_export(const Inputs& inputs);
+
 /// The materials table (built-in, or materials_file).
 Value materials(const Inputs& inputs);
 /// The model registry and the contact laws, with every parameter.
