@@ -140,3 +140,71 @@ def model_name(model):
 def order(errors, factor=2.0):
     """The convergence orders between successive errors of steps shrinking by `factor`."""
     return [math.log(abs(a) / abs(b)) / math.log(factor) for a, b in zip(errors, errors[1:])]
+
+
+def gas_script(coeff, cells=22, radius=1e-3, density=1000.0, phi=0.05, speed=1.0, dt=2e-7, steps=1000, seed=4927,
+               pair_style="bounce", dump=None, thermo=100, extra=""):
+    """A granular gas in a periodic box: cells^3 spheres on a simple cubic lattice at volume
+    fraction `phi`, Gaussian velocities of rms `speed` (no net momentum; the same on any
+    number of ranks: loop geom), `steps` steps of `dt`. Thermo prints step, the kinetic energy
+    and the number of contacts (pair neighbors within reach). `dump`: a file for the final
+    positions and velocities, sorted by atom id."""
+    spacing = radius * (4.0 * math.pi / (3.0 * phi)) ** (1.0 / 3.0)
+    mass = 4.0 / 3.0 * math.pi * radius ** 3 * density
+    # LAMMPS's SI temperature: (3/2) k_B T = (1/2) m <v^2>, with <v^2> = speed^2.
+    temperature = mass * speed ** 2 / (3.0 * 1.380649e-23)
+    plugin = f"plugin load {PLUGIN}" if pair_style.startswith("bounce") else ""
+    write = f"write_dump all custom {dump} id x y z vx vy vz modify sort id format float %.17g" if dump else ""
+    return f"""
+units si
+atom_style sphere
+boundary p p p
+comm_modify vel yes
+lattice sc {spacing!r}
+region box block 0 {cells} 0 {cells} 0 {cells}
+create_box 1 box
+create_atoms 1 box
+set type 1 diameter {2 * radius!r}
+set type 1 mass {mass!r}
+velocity all create {temperature!r} {seed} dist gaussian mom yes rot no loop geom
+{plugin}
+pair_style {pair_style}
+pair_coeff * * {coeff}
+neighbor {0.2 * radius!r} bin
+neigh_modify delay 0 every 1 check yes
+timestep {dt!r}
+fix 1 all nve/sphere
+compute ke all ke
+thermo_style custom step c_ke
+thermo_modify format float %.17g
+thermo {thermo}
+{extra}
+run {steps}
+{write}
+"""
+
+
+def thermo_rows(output):
+    """(step, value, ...) rows of the thermo table(s) LAMMPS printed."""
+    rows, reading = [], False
+    for line in output.splitlines():
+        if line.startswith("Step "):
+            reading = True
+            continue
+        if reading:
+            parts = line.split()
+            try:
+                rows.append(tuple(float(p) for p in parts))
+            except ValueError:
+                reading = False
+    return rows
+
+
+def read_dump(path):
+    """{id: (x, y, z, vx, vy, vz)} of a write_dump custom file."""
+    atoms, lines = {}, open(path).read().splitlines()
+    start = lines.index(next(l for l in lines if l.startswith("ITEM: ATOMS"))) + 1
+    for line in lines[start:]:
+        values = line.split()
+        atoms[int(values[0])] = tuple(float(v) for v in values[1:])
+    return atoms
