@@ -31,27 +31,15 @@
 #include "bounce/api/front_door.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/models/contact_law.hpp"
+#include "contact_step.h"
 
 using namespace LAMMPS_NS;
 
+using bounce::lammps::history_size;
+
 namespace {
-// Per contact: the tangential spring (models::tangential_step), then the last normal force.
-constexpr int history_size = 4;
-constexpr int last_force = 3;
-// The force at the ends of a contact is taken this fraction of the step's overlap inside it:
-// the limit there (viscoelastic-shifted jumps to C0 (A xi')^{3/2} at first touch; JKR to its
-// snap-on force), finite where a law is singular at xi = 0 (adhesive-viscoelastic's xi^{-1/4}).
-constexpr double inside = 1e-6;
 const char *const dummy_id = "NEIGH_HISTORY_BOUNCE_DUMMY";
 const char *const history_id = "NEIGH_HISTORY_BOUNCE";
-// The normal force of a contact law (positive: repulsive); under the `force` end rule it is
-// never attractive (the contact has ended where it first vanished).
-double normal_force(const bounce::models::DemModel &law, const bounce::models::ContactGeometry &g, double overlap,
-                    double rate)
-{
-  const double f = law.normal->force(g, overlap, rate);
-  return law.end_rule == bounce::models::EndRule::force && f < 0.0 ? 0.0 : f;
-}
 }  // namespace
 
 // The law of one type pair, and what the user typed for it (types I I and J J with the same
@@ -118,8 +106,8 @@ void PairBounce::settings(int narg, char **arg)
 // normal force does not.
 void PairBounce::transfer_history(double *source, double *target)
 {
-  for (int k = 0; k < last_force; k++) target[k] = -source[k];
-  target[last_force] = source[last_force];
+  for (int k = 0; k < bounce::lammps::last_force; k++) target[k] = -source[k];
+  target[bounce::lammps::last_force] = source[bounce::lammps::last_force];
 }
 
 // pair_coeff I J MODEL key value ...: the CLI's names without dashes (docs/lammps.md).
@@ -238,29 +226,16 @@ double PairBounce::init_one(int i, int j)
   return ri + rj + beyond;
 }
 
-// LAMMPS's velocity Verlet is a leapfrog: the force of step n acts over [t_n - dt/2, t_n + dt/2],
-// computed with the positions at t_n and the velocities at t_n - dt/2. With integration
-// `corrected` (the default, docs/lammps.md) three things make a collision second order in dt:
-//  * the rate of the overlap is predicted to t_n with this contact's last force,
-//    xi' = -v_n - (dt/2) F_last / m_eff (exact to O(dt^2) in a binary collision);
-//  * a contact that forms inside the step, phi dt before t_n, gets the impulse of its force over
-//    that time by Simpson's rule, plus F_n dt/2: phi (F_0 + 4 F_m + F_n)/6 + F_n/2, with F_0 at
-//    first touch (JKR's snap-on, viscoelastic-shifted's C0 (A xi')^{3/2}; 0 for Hertz) and F_m
-//    at half the overlap;
-//  * a contact that ends inside the step, theta dt after t_{n-1}, gets the impulse of its force
-//    from the last overlap to the release overlap by Simpson's rule, less the F_{n-1} dt/2 the
-//    last step already gave: theta (F_{n-1} + 4 F_m + F_r)/6 - F_{n-1}/2.
-//  Simpson's rule follows the force's sqrt(xi) and xi^{3/2} near xi = 0 closely (a trapezoid
-//  made the COR error 3x larger).
-// phi and theta come from the overlap at the step before, xi_n + dt v_n (Verlet's drift is
-// exactly dt v). `plain` computes the force as LAMMPS's own pair styles do.
+// The loop of pair granular; each contact's step is bounce::lammps::contact_step (the
+// corrected or plain integration, docs/lammps.md).
 void PairBounce::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  const bool update_history = !update->setupflag;
-  const bool corrected = corrected_ && update_history;  // setup: whole-step velocities
-  const double dt = update->dt;
-  double **x = atom->x, **v = atom->v, **f = atom->f, **torque = atom->torque;
+  bounce::lammps::StepSettings settings;
+  settings.dt = update->dt;
+  settings.update_history = !update->setupflag;
+  settings.corrected = corrected_ && settings.update_history;  // setup: whole-step velocities
+  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *type = atom->type;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
@@ -269,7 +244,6 @@ void PairBounce::compute(int eflag, int vflag)
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    const int itype = type[i];
     int *touch = firsttouch[i];
     double *all_history = firsthistory[i];
     const int *jlist = list->firstneigh[i];
@@ -278,105 +252,51 @@ void PairBounce::compute(int eflag, int vflag)
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      const bounce::models::DemModel &law = *this->law(itype, type[j]);
-      bounce::models::ContactGeometry g;
-      g.effective_radius = radius[i] * radius[j] / radsum;
       double *history = &all_history[history_size * jj];
-
-      // A contact forms at r < R_i + R_j; one that exists holds down to its release overlap.
-      const bool touching = touch[jj];
-      bool contact = rsq < radsum * radsum;
-      double release = 0.0;
-      if (!contact && touching) {
-        release = law.normal->release_overlap(g);
-        contact = rsq < (radsum - release) * (radsum - release);
-      }
-      if (!contact && !(touching && corrected)) {
-        touch[jj] = 0;
+      if (!touch[jj] && rsq >= radsum * radsum) {  // no contact, none before
         for (int k = 0; k < history_size; k++) history[k] = 0.0;
         continue;
       }
-      const double r = std::sqrt(rsq), rinv = 1.0 / r;
-      const double n[3] = {delx * rinv, dely * rinv, delz * rinv};
-      const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-      const double vn = vr[0] * n[0] + vr[1] * n[1] + vr[2] * n[2];
-      const double overlap = radsum - r;
-      const double before = overlap + dt * vn;  // the overlap at the step before
+      const bounce::models::DemModel &law = *this->law(type[i], type[j]);
+      bounce::models::ContactGeometry g;
+      g.effective_radius = radius[i] * radius[j] / radsum;
       g.effective_mass = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      const double r = std::sqrt(rsq), rinv = 1.0 / r;
+      bounce::lammps::Kinematics k;
+      k.n[0] = delx * rinv;
+      k.n[1] = dely * rinv;
+      k.n[2] = delz * rinv;
+      k.overlap = radsum - r;
+      const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+      k.vn = vr[0] * k.n[0] + vr[1] * k.n[1] + vr[2] * k.n[2];
+      // The contact points' relative velocity in the tangent plane, as pair granular takes it.
+      const double wr[3] = {radius[i] * omega[i][0] + radius[j] * omega[j][0],
+                            radius[i] * omega[i][1] + radius[j] * omega[j][1],
+                            radius[i] * omega[i][2] + radius[j] * omega[j][2]};
+      k.sliding[0] = vr[0] - k.vn * k.n[0] - (k.n[2] * wr[1] - k.n[1] * wr[2]);
+      k.sliding[1] = vr[1] - k.vn * k.n[1] - (k.n[0] * wr[2] - k.n[2] * wr[0]);
+      k.sliding[2] = vr[2] - k.vn * k.n[2] - (k.n[1] * wr[0] - k.n[0] * wr[1]);
+      const double release = k.overlap > 0.0 ? 0.0 : law.normal->release_overlap(g);
+      const bounce::lammps::ContactForce c = bounce::lammps::contact_step(law, g, k, release, settings, touch[jj], history);
 
-      double fn = 0.0;
-      double ft[3] = {0.0, 0.0, 0.0};
-      if (!contact) {
-        // Released inside the step, theta dt after the last one.
-        const double theta = before > overlap ? std::clamp((before - release) / (before - overlap), 0.0, 1.0) : 0.0;
-        const double last = history[last_force];
-        const double middle = normal_force(law, g, 0.5 * (before + release), -vn);
-        const double end = normal_force(law, g, release + inside * (before - release), -vn);
-        fn = theta * (last + 4.0 * middle + end) / 6.0 - 0.5 * last;
-        touch[jj] = 0;
-        for (int k = 0; k < history_size; k++) history[k] = 0.0;
-      } else {
-        touch[jj] = 1;
-        // The normal force (positive: repulsive) at overlap radsum - r and its rate.
-        const double rate = -vn - (corrected ? 0.5 * dt * history[last_force] / g.effective_mass : 0.0);
-        fn = normal_force(law, g, overlap, rate);
-        const double previous = history[last_force];
-        if (update_history) history[last_force] = fn;
-        if (law.tangential) tangential(law, n, vr, vn, i, j, g, fn, touching ? previous : fn, dt, update_history, history, ft);
-        // Formed inside the step, phi dt before now (a whole step if it overlapped already).
-        if (corrected && !touching) {
-          const double phi = before < 0.0 ? overlap / (overlap - before) : 1.0;
-          const double first = normal_force(law, g, inside * overlap, rate);
-          const double middle = normal_force(law, g, 0.5 * overlap, rate);
-          fn = phi * (first + 4.0 * middle + fn) / 6.0 + 0.5 * fn;
-        }
-      }
-
-      const double fx = n[0] * fn + ft[0], fy = n[1] * fn + ft[1], fz = n[2] * fn + ft[2];
+      const double *ft = c.tangential;
+      const double fx = k.n[0] * c.normal + ft[0], fy = k.n[1] * c.normal + ft[1], fz = k.n[2] * c.normal + ft[2];
       f[i][0] += fx;
       f[i][1] += fy;
       f[i][2] += fz;
-      const double tor[3] = {n[1] * ft[2] - n[2] * ft[1], n[2] * ft[0] - n[0] * ft[2], n[0] * ft[1] - n[1] * ft[0]};
       // The lever arm is the radius, as in BSHP96's (10) and in the contact points' velocity
       // above (pair granular's R - xi/2 here would make the tangential force's power differ
       // from -F^T . sliding by O(xi/R), and eps^T by ~1e-3 from bounce's).
-      const double arm_i = radius[i];
-      for (int k = 0; k < 3; k++) torque[i][k] -= arm_i * tor[k];
+      const double tor[3] = {k.n[1] * ft[2] - k.n[2] * ft[1], k.n[2] * ft[0] - k.n[0] * ft[2],
+                             k.n[0] * ft[1] - k.n[1] * ft[0]};
+      for (int d = 0; d < 3; d++) torque[i][d] -= radius[i] * tor[d];
       if (newton_pair || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
         f[j][2] -= fz;
-        const double arm_j = radius[j];
-        for (int k = 0; k < 3; k++) torque[j][k] -= arm_j * tor[k];
+        for (int d = 0; d < 3; d++) torque[j][d] -= radius[j] * tor[d];
       }
       if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
-}
-
-// BSHP96's tangential law of a contact (models::tangential_step) with the contact points'
-// relative velocity in the tangent plane, as pair granular takes it.
-void PairBounce::tangential(const bounce::models::DemModel &law, const double n[3], const double vr[3], double vn,
-                            int i, int j, const bounce::models::ContactGeometry &g, double fn, double previous, double dt, bool update_history,
-                            double *history, double ft[3]) const
-{
-  const double *radius = atom->radius;
-  double **omega = atom->omega;
-  const double wr[3] = {radius[i] * omega[i][0] + radius[j] * omega[j][0],
-                        radius[i] * omega[i][1] + radius[j] * omega[j][1],
-                        radius[i] * omega[i][2] + radius[j] * omega[j][2]};
-  const double sliding[3] = {vr[0] - vn * n[0] - (n[2] * wr[1] - n[1] * wr[2]),
-                             vr[1] - vn * n[1] - (n[0] * wr[2] - n[2] * wr[0]),
-                             vr[2] - vn * n[2] - (n[1] * wr[0] - n[0] * wr[1])};
-  if (update_history) {
-    // The spring turns with the contact: back into the tangent plane, its length kept.
-    const double along = history[0] * n[0] + history[1] * n[1] + history[2] * n[2];
-    const double before = std::sqrt(history[0] * history[0] + history[1] * history[1] + history[2] * history[2]);
-    for (int k = 0; k < 3; k++) history[k] -= along * n[k];
-    const double after = std::sqrt(history[0] * history[0] + history[1] * history[1] + history[2] * history[2]);
-    if (after > 0.0)
-      for (int k = 0; k < 3; k++) history[k] *= before / after;
-  }
-  bounce::models::tangential_step(*law.tangential, fn, previous, g.effective_mass, sliding, dt, update_history,
-                                  history, ft);
 }

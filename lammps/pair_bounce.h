@@ -46,10 +46,6 @@ class PairBounce : public Pair {
   struct TypePair;
   void allocate();
   double reach(int itype, int jtype, double radius_i, double radius_j) const;
-  void tangential(const bounce::models::DemModel &law, const double n[3], const double vr[3], double vn, int i, int j,
-                  const bounce::models::ContactGeometry &g, double fn, double previous, double dt, bool update_history,
-                  double *history,
-                  double ft[3]) const;
 
   std::vector<std::shared_ptr<const TypePair>> laws_;  // [itype * (ntypes + 1) + jtype]
   class FixDummy *fix_dummy_;

@@ -28,9 +28,9 @@ CommandSpec make_pair_coeff_command() {
                              fmt::join(c.models, ", "));
   c.unused = {
       {{"radius", "radius2", "density", "density2", "inertia", "inertia2"},
-       "none in pair_coeff: each atom's radius and mass come from LAMMPS (atom_style sphere), and its moment of "
+       "none in LAMMPS: each atom's radius and mass come from LAMMPS (atom_style sphere), and its moment of "
        "inertia is a solid sphere's"},
-      {{"wall", "rigid_wall"}, "none in pair_coeff: pair_style bounce acts between atoms (docs/lammps.md: walls)"},
+      {{"wall", "rigid_wall"}, "none in pair_coeff: pair_style bounce acts between atoms (walls: fix wall/bounce)"},
       {{"yield"},
        "none in LAMMPS: plastic losses (K13 (28)-(30)) are a rule applied after a collision, not a contact force"},
       {{"method", "tolerance", "adhesive_tolerance", "stiff_engine"},
@@ -40,23 +40,49 @@ CommandSpec make_pair_coeff_command() {
   return c;
 }
 
+CommandSpec make_fix_wall_command() {
+  CommandSpec c = make_pair_coeff_command();
+  c.name = "fix_wall";
+  c.summary = "LAMMPS fix wall/bounce: a model as the contact law between atoms and a flat wall";
+  // Body 2 is the wall: elastic, of material2 (or E2, nu2, gamma2; default body 1's), or
+  // rigid_wall. `wall` itself is implied.
+  c.unused[1] = {{"wall"}, "none in fix wall/bounce: its wall is body 2 (material2, E2, nu2, gamma2, or rigid_wall yes)"};
+  return c;
+}
+
 }  // namespace
+
+const CommandSpec& fix_wall_command() {
+  static const CommandSpec spec = make_fix_wall_command();
+  return spec;
+}
 
 const CommandSpec& pair_coeff_command() {
   static const CommandSpec spec = make_pair_coeff_command();
   return spec;
 }
 
-models::DemModel contact_law(const Inputs& inputs) {
-  const detail::Bound b = detail::bind_inputs(pair_coeff_command(), inputs);
-  // The pair is built for its materials only: a placeholder radius and density stand in for
-  // the atoms' (each contact gets its own R_eff and m_eff; refused above as inputs).
-  Inputs pair_inputs = b.pair.values();
+namespace {
+// The pair of a DEM law is built for its materials only: a placeholder radius and density stand
+// in for the atoms' (each contact gets its own R_eff and m_eff; the command refuses them as
+// inputs). The pair's inputs are passed on as typed, so that a message names what the user wrote.
+models::DemModel dem_law(const CommandSpec& command, const Inputs& inputs, bool wall) {
+  const detail::Bound b = detail::bind_inputs(command, inputs);
+  Inputs pair_inputs;
+  for (const ParameterSpec& spec : pair_parameters()) {
+    if (const auto it = inputs.find(spec.name); it != inputs.end()) pair_inputs.emplace(it->first, it->second);
+  }
   pair_inputs["radius"] = 1.0;
   pair_inputs["density"] = 1.0;
+  if (wall && !b.pair.flag("rigid_wall")) pair_inputs["wall"] = true;
   const Pair pair = bounce::make_pair(bind_parameters(pair_parameters(), pair_inputs, "the pair"));
   return models::make_contact_law(pair, b.model, b.model_parameters);
 }
+}  // namespace
+
+models::DemModel contact_law(const Inputs& inputs) { return dem_law(pair_coeff_command(), inputs, false); }
+
+models::DemModel wall_contact_law(const Inputs& inputs) { return dem_law(fix_wall_command(), inputs, true); }
 
 // --- bounce lammps: the stock pair_style granular lines that best represent a model ------
 

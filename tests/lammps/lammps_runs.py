@@ -208,3 +208,52 @@ def read_dump(path):
         values = line.split()
         atoms[int(values[0])] = tuple(float(v) for v in values[1:])
     return atoms
+
+
+def wall_collision(pair, model, velocity, steps_per_contact=1000, tangential_velocity=0.0, wall_args=None):
+    """One sphere hitting a flat wall (fix wall/bounce zplane 0 NULL) as `bounce collide --wall`
+    (or `--rigid-wall` with rigid_wall in `pair`): it touches the wall at t = 0 moving at -velocity
+    along z (and `tangential_velocity` along x). Returns (eps^N, eps^T, bounce's record)."""
+    options = dict(pair, **model)
+    extra = ["--tangential-velocity", str(tangential_velocity)] if tangential_velocity else []
+    cli = cli_args({k: v for k, v in options.items() if k != "rigid_wall"})
+    cli += ["--rigid-wall"] if pair.get("rigid_wall") == "yes" else ["--wall"]
+    ref = bounce(*cli, "--velocity", str(velocity), *extra)
+    body = ref["pair"]["body1"]
+    r, m = body["radius"], body["mass"]
+    dt = ref["contact_time"] / steps_per_contact
+    steps = int(3 * steps_per_contact)
+    keys = {k: v for k, v in options.items() if not k.startswith("radius") and k != "model"}
+    if wall_args is None:
+        wall_args = f"zplane 0 NULL {model['model']} " + coeff_args(keys)
+    box = 6 * r
+    script = f"""
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block {-box} {box} {-box} {box} {-box} {box}
+create_box 1 box
+create_atoms 1 single 0 0 {r!r}
+set atom 1 diameter {2 * r!r} mass {m!r}
+velocity all set {tangential_velocity!r} 0 {-velocity!r}
+plugin load {PLUGIN}
+pair_style bounce
+pair_coeff * * hertz E 1e9 nu 0.3
+fix 1 all nve/sphere
+fix 2 all wall/bounce {wall_args}
+compute spin all property/atom omegay
+variable w equal c_spin[1]
+thermo_style custom step v_w
+thermo {steps}
+timestep {dt!r}
+run {steps}
+print "STATE $(vx[1]:%.17g) $(vz[1]:%.17g) $(v_w:%.17g)"
+"""
+    _, output = run_lammps(script)
+    vx, vz, wy = map(float, re.findall(r"^STATE (.*)$", output, re.M)[-1].split())
+    eps_n = vz / velocity
+    # Contact point velocity along x: vx + (omega x (-R z))_x = vx - R omega_y.
+    eps_t = (vx - r * wy) / tangential_velocity if tangential_velocity else float("nan")
+    return eps_n, eps_t, ref

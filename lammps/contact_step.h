@@ -1,0 +1,44 @@
+/* One contact over one LAMMPS step: what pair_style bounce (atom-atom) and fix wall/bounce
+   (atom-wall) both do with a bounce contact law (docs/lammps.md, What happens in a contact). */
+
+#ifndef BOUNCE_LAMMPS_CONTACT_STEP_H
+#define BOUNCE_LAMMPS_CONTACT_STEP_H
+
+#include "bounce/models/contact_law.hpp"
+
+namespace bounce::lammps {
+
+// Per contact: the tangential spring (models::tangential_step), then the last normal force.
+constexpr int history_size = 4;
+constexpr int last_force = 3;
+
+/// The contact's geometry and motion this step; n points from body 2 (atom j, the wall) to
+/// body 1 (atom i).
+struct Kinematics {
+  double n[3];
+  double overlap;     ///< R_i + R_j - r (R_i - distance for a wall) [m]
+  double vn;          ///< (v_i - v_j) . n, the half-step value LAMMPS has [m/s]
+  double sliding[3];  ///< the contact points' relative velocity in the tangent plane [m/s]
+};
+
+struct StepSettings {
+  double dt;
+  bool update_history;  ///< false in LAMMPS's setup
+  bool corrected;       ///< integration corrected (and not in setup)
+};
+
+struct ContactForce {
+  double normal = 0.0;                       ///< along n, positive: repulsive [N]
+  double tangential[3] = {0.0, 0.0, 0.0};    ///< at the contact point [N]
+};
+
+/// The force of a contact that exists (overlap > 0, or touching and overlap > release, with
+/// release = law.normal->release_overlap(g)) or has just ended inside this step (touching and
+/// not beyond release; with `corrected` it then still gets its impulse's correction). Updates
+/// `touch` and the history (cleared when the contact ends).
+ContactForce contact_step(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
+                          double release, const StepSettings& s, int& touch, double* history);
+
+}  // namespace bounce::lammps
+
+#endif

@@ -1,0 +1,177 @@
+/* fix wall/bounce (docs/lammps.md, Walls): the atom is body 1, the flat wall body 2 (R_eff = R,
+   m_eff = m); each contact's step is bounce::lammps::contact_step, as pair_style bounce's. */
+
+#include "fix_wall_bounce.h"
+
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include "atom.h"
+#include "error.h"
+#include "memory.h"
+#include "update.h"
+#include "utils.h"
+
+#include "bounce/api/front_door.hpp"
+#include "bounce/models/contact_law.hpp"
+#include "contact_step.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+constexpr int size = 2 * 5;  // two walls, FixWallBounce::values each
+}
+
+FixWallBounce::FixWallBounce(LAMMPS *instance, int narg, char **arg) : Fix(instance, narg, arg), state_(nullptr)
+{
+  if (narg < 7)
+    error->all(FLERR, "fix wall/bounce: expected fix ID group wall/bounce xplane|yplane|zplane LO HI MODEL key value ...");
+  if (std::strcmp(arg[3], "xplane") == 0) axis_ = 0;
+  else if (std::strcmp(arg[3], "yplane") == 0) axis_ = 1;
+  else if (std::strcmp(arg[3], "zplane") == 0) axis_ = 2;
+  else error->all(FLERR, "fix wall/bounce: wall = {} is invalid: expected xplane, yplane or zplane", arg[3]);
+  for (int w = 0; w < 2; w++) {
+    has_[w] = std::strcmp(arg[4 + w], "NULL") != 0;
+    position_[w] = has_[w] ? utils::numeric(FLERR, arg[4 + w], false, lmp) : 0.0;
+  }
+  if (!has_[0] && !has_[1]) error->all(FLERR, "fix wall/bounce: LO and HI are both NULL: no wall");
+  if (has_[0] && has_[1] && position_[0] >= position_[1])
+    error->all(FLERR, "fix wall/bounce: LO = {} is invalid: expected LO < HI = {}", arg[4], arg[5]);
+
+  bounce::api::Inputs inputs;
+  inputs["model"] = std::string(arg[6]);
+  for (int k = 7; k < narg; k += 2) {
+    if (k + 1 >= narg) error->all(FLERR, "fix wall/bounce: {} has no value (pairs of key value follow the model)", arg[k]);
+    if (inputs.count(arg[k])) error->all(FLERR, "fix wall/bounce: {} is given twice", arg[k]);
+    if (std::strcmp(arg[k], "integration") == 0) {
+      if (std::strcmp(arg[k + 1], "corrected") == 0) corrected_ = true;
+      else if (std::strcmp(arg[k + 1], "plain") == 0) corrected_ = false;
+      else error->all(FLERR, "fix wall/bounce: integration = {} is invalid: expected corrected or plain", arg[k + 1]);
+    } else if (std::strcmp(arg[k], "rigid_wall") == 0) {
+      const std::string v = arg[k + 1];
+      if (v != "yes" && v != "no") error->all(FLERR, "fix wall/bounce: rigid_wall = {} is invalid: expected yes or no", v);
+      inputs["rigid_wall"] = v == "yes";
+    } else {
+      inputs[arg[k]] = std::string(arg[k + 1]);
+    }
+  }
+  try {
+    law_ = std::make_shared<const bounce::models::DemModel>(bounce::api::wall_contact_law(inputs));
+  } catch (const std::exception &e) {
+    error->all(FLERR, "fix wall/bounce {}: {}", arg[6], e.what());
+  }
+
+  restart_peratom = 0;
+  FixWallBounce::grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  for (int i = 0; i < atom->nlocal; i++) FixWallBounce::set_arrays(i);
+}
+
+FixWallBounce::~FixWallBounce()
+{
+  atom->delete_callback(id, Atom::GROW);
+  memory->destroy(state_);
+}
+
+int FixWallBounce::setmask()
+{
+  return FixConst::POST_FORCE;
+}
+
+void FixWallBounce::init()
+{
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, "fix wall/bounce needs atom_style sphere (radius, rmass, omega, torque)");
+  if (std::strcmp(update->unit_style, "si") != 0)
+    error->all(FLERR, "fix wall/bounce needs units si (bounce's laws are in SI units), not units {}", update->unit_style);
+  if (!utils::strmatch(update->integrate_style, "^verlet"))
+    error->all(FLERR, "fix wall/bounce needs run_style verlet");
+}
+
+void FixWallBounce::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+void FixWallBounce::post_force(int)
+{
+  bounce::lammps::StepSettings settings;
+  settings.dt = update->dt;
+  settings.update_history = !update->setupflag;
+  settings.corrected = corrected_ && settings.update_history;
+  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  const bounce::models::DemModel &law = *law_;
+
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int w = 0; w < 2; w++) {
+      if (!has_[w]) continue;
+      double *slot = &state_[i][w * values];
+      const double sign = w == 0 ? 1.0 : -1.0;  // n points from the wall into the box
+      const double distance = sign * (x[i][axis_] - position_[w]);
+      const double overlap = radius[i] - distance;
+      int touch = static_cast<int>(slot[0]);
+      if (!touch && overlap <= 0.0) continue;
+      bounce::models::ContactGeometry g;
+      g.effective_radius = radius[i];  // a flat wall
+      g.effective_mass = rmass[i];     // an immovable one
+      bounce::lammps::Kinematics k;
+      k.n[0] = k.n[1] = k.n[2] = 0.0;
+      k.n[axis_] = sign;
+      k.overlap = overlap;
+      k.vn = sign * v[i][axis_];
+      // The contact point's velocity in the tangent plane: v + omega x (-R n).
+      const double *o = omega[i];
+      const double spin[3] = {-radius[i] * (o[1] * k.n[2] - o[2] * k.n[1]), -radius[i] * (o[2] * k.n[0] - o[0] * k.n[2]),
+                              -radius[i] * (o[0] * k.n[1] - o[1] * k.n[0])};
+      for (int d = 0; d < 3; d++) k.sliding[d] = v[i][d] + spin[d];
+      k.sliding[axis_] = 0.0;
+      const double release = overlap > 0.0 ? 0.0 : law.normal->release_overlap(g);
+      const bounce::lammps::ContactForce c =
+          bounce::lammps::contact_step(law, g, k, release, settings, touch, slot + 1);
+      slot[0] = touch;
+      for (int d = 0; d < 3; d++) f[i][d] += k.n[d] * c.normal + c.tangential[d];
+      // Torque (-R n) x F^T, with lever arm R (as pair_style bounce).
+      const double *ft = c.tangential;
+      torque[i][0] -= radius[i] * (k.n[1] * ft[2] - k.n[2] * ft[1]);
+      torque[i][1] -= radius[i] * (k.n[2] * ft[0] - k.n[0] * ft[2]);
+      torque[i][2] -= radius[i] * (k.n[0] * ft[1] - k.n[1] * ft[0]);
+    }
+  }
+}
+
+double FixWallBounce::memory_usage()
+{
+  return static_cast<double>(atom->nmax) * size * sizeof(double);
+}
+
+void FixWallBounce::grow_arrays(int nmax)
+{
+  memory->grow(state_, nmax, size, "fix_wall_bounce:state");
+}
+
+void FixWallBounce::copy_arrays(int i, int j, int)
+{
+  for (int m = 0; m < size; m++) state_[j][m] = state_[i][m];
+}
+
+void FixWallBounce::set_arrays(int i)
+{
+  for (int m = 0; m < size; m++) state_[i][m] = 0.0;
+}
+
+int FixWallBounce::pack_exchange(int i, double *buf)
+{
+  for (int m = 0; m < size; m++) buf[m] = state_[i][m];
+  return size;
+}
+
+int FixWallBounce::unpack_exchange(int nlocal, double *buf)
+{
+  for (int m = 0; m < size; m++) state_[nlocal][m] = buf[m];
+  return size;
+}

@@ -1,0 +1,56 @@
+/* fix wall/bounce: flat walls acting on atoms with a bounce contact law (docs/lammps.md, Walls).
+
+   fix ID group wall/bounce xplane|yplane|zplane LO HI MODEL key value ...
+
+   LO and HI are the wall positions along the axis (NULL: no wall there); MODEL and the keys
+   are pair_coeff's, body 1 being the atom and body 2 the wall (material2, E2, nu2, gamma2, or
+   rigid_wall yes). Each atom keeps, per wall, the contact's touch flag and history. */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(wall/bounce,FixWallBounce);
+// clang-format on
+#else
+
+#ifndef BOUNCE_LAMMPS_FIX_WALL_BOUNCE_H
+#define BOUNCE_LAMMPS_FIX_WALL_BOUNCE_H
+
+#include <memory>
+
+#include "fix.h"
+
+namespace bounce::models {
+struct DemModel;
+}
+
+namespace LAMMPS_NS {
+
+class FixWallBounce : public Fix {
+ public:
+  FixWallBounce(class LAMMPS *, int, char **);
+  ~FixWallBounce() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+
+ private:
+  static constexpr int values = 5;  // per atom and wall: the touch flag, then the contact's history (4)
+  int axis_;
+  bool has_[2];
+  double position_[2];
+  bool corrected_ = true;
+  std::shared_ptr<const bounce::models::DemModel> law_;
+  double **state_;  // [atom][wall * values + k]
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
