@@ -14,3 +14,9 @@ echo "== K13 collisions against scipy, and the two stiff engines"
 /usr/bin/python3 bench/adhesive_vs_scipy.py "$build_dir"
 echo "== bounce fit: K13's 60 x 60 x 100 grid, whole process, 1 and 2 threads"
 /usr/bin/python3 bench/fit_speed.py "$build_dir"
+if [ -x "$build_dir/lammps/lmp" ] && [ -f "$build_dir/lammps/bounceplugin.so" ]; then
+  echo "== pair_style bounce against LAMMPS's pair granular, and 1 -> 2 ranks"
+  /usr/bin/python3 bench/lammps_speed.py "$build_dir"
+else
+  echo "== (no LAMMPS build: make lammps for the LAMMPS benchmark)"
+fi

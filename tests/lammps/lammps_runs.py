@@ -143,7 +143,7 @@ def order(errors, factor=2.0):
 
 
 def gas_script(coeff, cells=22, radius=1e-3, density=1000.0, phi=0.05, speed=1.0, dt=2e-7, steps=1000, seed=4927,
-               pair_style="bounce", dump=None, thermo=100, extra=""):
+               pair_style="bounce", dump=None, thermo=100, extra="", skin=None):
     """A granular gas in a periodic box: cells^3 spheres on a simple cubic lattice at volume
     fraction `phi`, Gaussian velocities of rms `speed` (no net momentum; the same on any
     number of ranks: loop geom), `steps` steps of `dt`. Thermo prints step, the kinetic energy
@@ -170,7 +170,7 @@ velocity all create {temperature!r} {seed} dist gaussian mom yes rot no loop geo
 {plugin}
 pair_style {pair_style}
 pair_coeff * * {coeff}
-neighbor {0.2 * radius!r} bin
+neighbor {(0.2 * radius if skin is None else skin)!r} bin
 neigh_modify delay 0 every 1 check yes
 timestep {dt!r}
 fix 1 all nve/sphere

@@ -1,0 +1,103 @@
+#!/usr/bin/python3
+"""pair_style bounce against LAMMPS's own pair granular in the same lmp (docs/benchmarks.md):
+
+1. per-contact cost: a dense gas of soft viscoelastic grains (volume fraction 0.45, so that most
+   neighbors touch), the same start for `pair_style bounce` (corrected and plain) and for
+   `pair_style granular hertz/material ... damping viscoelastic` with the coefficients
+   `bounce lammps` prints; LAMMPS's own timer of the Pair section per step and contact;
+2. strong scaling: 103 823 grains on 1 and 2 ranks (loop time).
+
+    /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR]      (after make lammps)
+"""
+import os
+import re
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+BUILD = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "build"))
+os.environ.setdefault("BOUNCE_LMP", os.path.join(BUILD, "lammps", "lmp"))
+os.environ.setdefault("BOUNCE_PLUGIN", os.path.join(BUILD, "lammps", "bounceplugin.so"))
+os.environ.setdefault("BOUNCE_CLI", os.path.join(BUILD, "bin", "bounce"))
+sys.path.insert(0, os.path.join(HERE, "..", "tests", "lammps"))
+import lammps_runs as L  # noqa: E402
+
+# Soft viscoelastic grains: E = 1e7 Pa, R = 1 mm, density 1000, A = 3e-6 s (eps ~ 0.89 at 1 m/s,
+# t_c = 1.4e-4 s); dt = 3e-6 s.
+E, NU, A, RADIUS, DENSITY = 1e7, 0.3, 3e-6, 1e-3, 1000.0
+
+
+def section(output, name):
+    """Average seconds of a section of LAMMPS's MPI task timing breakdown."""
+    match = re.search(rf"^{name}\s*\|\s*\S+\s*\|\s*(\S+)", output, re.M)
+    return float(match.group(1))
+
+
+def loop_time(output):
+    return float(re.search(r"^Loop time of (\S+)", output, re.M).group(1))
+
+
+def contacts(output):
+    """Mean number of contacts over the thermo rows (compute contact/atom counts each twice)."""
+    rows = L.thermo_rows(output)
+    return sum(r[2] for r in rows[1:]) / len(rows[1:]) / 2
+
+
+def dense(style, coeff, cells, steps, cores=1):
+    extra = "compute touch all contact/atom\ncompute total all reduce sum c_touch\nthermo_style custom step c_ke c_total"
+    script = L.gas_script(coeff, cells=cells, radius=RADIUS, density=DENSITY, phi=0.45, speed=1.0, dt=3e-6,
+                          steps=steps, thermo=max(steps // 5, 1), pair_style=style, extra=extra, skin=0.1 * RADIUS)
+    _, output = L.run_lammps(script, cores=cores)
+    return output
+
+
+def per_contact():
+    mass = 4.0 / 3.0 * 3.141592653589793 * RADIUS ** 3 * DENSITY
+    e_star = E / (2 * (1 - NU * NU))
+    eta = 2 * A * e_star / (mass / 2)
+    stock = f"hertz/material {E!r} {eta!r} {NU} damping viscoelastic tangential linear_nohistory 0 0"
+    ours = f"viscoelastic E {E!r} nu {NU} A {A}"
+    cells, steps = 30, 2000
+    styles = [("pair granular hertz/material + viscoelastic", "granular", stock),
+              ("pair_style bounce viscoelastic (plain)", "bounce integration plain", ours),
+              ("pair_style bounce viscoelastic (corrected)", "bounce", ours)]
+    best = {}
+    for _ in range(5):  # interleaved, the fastest of five: the least disturbed by the machine
+        for label, style, coeff in styles:
+            out = dense(style, coeff, cells, steps)
+            pair = section(out, "Pair")
+            if label not in best or pair < best[label][0]:
+                best[label] = (pair, loop_time(out), contacts(out))
+    rows = [(label,) + best[label] for label, _, _ in styles]
+    n = cells ** 3
+    print(f"{n} grains at volume fraction 0.45, {steps} steps; LAMMPS's Pair time per step and contact:")
+    base = None
+    for label, pair, loop, c in rows:
+        per = pair / steps / c
+        base = base or (per, loop)
+        print(f"  {label:45s} {per * 1e9:6.1f} ns/contact ({2 * c / n:.2f} contacts/grain): x{per / base[0]:.2f}; "
+              f"whole loop {loop:.2f} s (x{loop / base[1]:.2f})")
+
+
+def scaling():
+    coeff = f"viscoelastic E {E!r} nu {NU} A {A} friction 0.3 asperity 1e-6"
+    cells, steps = 47, 300
+    times = {}
+    for cores in (1, 2):
+        script = L.gas_script(coeff, cells=cells, radius=RADIUS, density=DENSITY, phi=0.3, speed=1.0, dt=3e-6,
+                              steps=steps, thermo=steps)
+        best = None
+        for _ in range(2):
+            _, out = L.run_lammps(script, cores=cores)
+            t = loop_time(out)
+            best = t if best is None else min(best, t)
+        times[cores] = best
+    print(f"strong scaling, {cells ** 3} grains (volume fraction 0.3, asperity law), {steps} steps: "
+          f"1 rank {times[1]:.2f} s, 2 ranks {times[2]:.2f} s: speed-up {times[1] / times[2]:.2f}")
+
+
+if __name__ == "__main__":
+    start = time.time()
+    per_contact()
+    scaling()
+    print(f"({time.time() - start:.0f} s)")
