@@ -14,6 +14,8 @@
 #                    cached in ~/.cache/bounce, and build/lammps/bounceplugin.so against it;
 #                    build/lammps/lmp runs it, and `make test` then runs the LAMMPS tests
 #                    (docs/lammps.md)
+#   make lammps-demo opt-in: the homogeneous cooling state of two granular gases in LAMMPS on
+#                    2 MPI ranks (~7 min), out/figures/hcs-cooling and out/hcs/results.json
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
@@ -30,7 +32,7 @@ SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_aft
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 .PHONY: all build deps deps-sanitize configure test demo bench check-long lint clean \
-        build-sanitize test-sanitize fuzz lammps
+        build-sanitize test-sanitize fuzz lammps lammps-demo
 
 all: build
 
@@ -81,6 +83,9 @@ lammps: deps
 	@src=$$(./scripts/build-lammps.sh) && cmake -S . -B $(BUILD_DIR) -DLAMMPS_SOURCE_DIR="$$src" >/dev/null
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 	@echo "bounce: $(BUILD_DIR)/lammps/lmp and $(BUILD_DIR)/lammps/bounceplugin.so (docs/lammps.md)"
+
+lammps-demo: lammps
+	$(PYTHON) tools/hcs.py --build $(BUILD_DIR) --out out
 
 demo: deps
 	@$(MAKE) --no-print-directory build
