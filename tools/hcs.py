@@ -162,20 +162,10 @@ def run_gas(name, coeff, edges, dt_at, dumps, lmp, plugin, work, cores):
     if done.returncode != 0:
         sys.exit(f"hcs: lmp failed:\n{(done.stdout + done.stderr)[-3000:]}")
     print(f"hcs: {name}: {time.time() - started:.0f} s", flush=True)
-    rows = {}
-    reading = False
-    for line in open(os.path.join(work, "log.lammps")):
-        if line.startswith("Step "):
-            reading = True
-            continue
-        if reading:
-            parts = line.split()
-            try:
-                step, t, ke = int(parts[0]), float(parts[1]), float(parts[2])
-            except (ValueError, IndexError):
-                reading = False
-                continue
-            rows[step] = (t, ke)
+    sys.path.insert(0, os.path.join(ROOT, "tests", "lammps"))
+    import lammps_runs
+    with open(os.path.join(work, "log.lammps")) as f:
+        rows = {int(step): (t, ke) for step, t, ke in lammps_runs.thermo_rows(f.read())}  # runs repeat a step
     data = np.array(sorted(rows.values()))
     snaps = {}
     for k in dumps:

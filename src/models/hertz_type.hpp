@@ -6,7 +6,10 @@
 
 #include "bounce/contact/convex.hpp"
 #include "bounce/core/parameters.hpp"
+#include "bounce/contact/hertz.hpp"
+#include "bounce/models/contact_law.hpp"
 #include "bounce/models/normal_force.hpp"
+#include "bounce/pair/mixing.hpp"
 #include "bounce/pair/pair.hpp"
 
 namespace bounce::models::detail {
@@ -23,6 +26,23 @@ class HertzTypeForce : public NormalForceModel {
 
  protected:
   HertzGeometry g_;
+};
+
+/// A Hertz-type law as a DEM contact law (contact_law.hpp): `Law(C0, A, xi, xi')` with C0 = rho
+/// of BP04 (8.24) from the contact's R_eff, and the Hertz potential.
+template <double (*Law)(double, double, double, double)>
+class HertzTypeContact final : public ContactLaw {
+ public:
+  HertzTypeContact(double modulus, double a) : modulus_(modulus), a_(a) {}
+  double force(const ContactGeometry& g, double xi, double rate) const override {
+    return Law(hertz_constant(modulus_, g.effective_radius), a_, xi, rate);
+  }
+  double energy(const ContactGeometry& g, double xi) const override {
+    return contact::hertz::elastic_energy(hertz_constant(modulus_, g.effective_radius), xi);
+  }
+
+ private:
+  double modulus_, a_;
 };
 
 /// A [s]: given, from eta1 and eta2 (BP04 (8.38), bodies of one material), or T_vis / nu^2

@@ -34,21 +34,6 @@ class ViscoelasticForce final : public detail::HertzTypeForce {
   std::string name_;
 };
 
-// The same law per DEM contact: C0 = rho of BP04 (8.24) from the contact's R_eff.
-class ViscoelasticContact final : public ContactLaw {
- public:
-  ViscoelasticContact(double modulus, double a) : modulus_(modulus), a_(a) {}
-  double force(const ContactGeometry& g, double xi, double rate) const override {
-    return viscoelastic_force(hertz_constant(modulus_, g.effective_radius), a_, xi, rate);
-  }
-  double energy(const ContactGeometry& g, double xi) const override {
-    return contact::hertz::elastic_energy(hertz_constant(modulus_, g.effective_radius), xi);
-  }
-
- private:
-  double modulus_, a_;
-};
-
 Model hertz_type(const Pair& pair, const Parameters& p, double a, std::string_view name) {
   Model m;
   const HertzGeometry geometry = detail::hertz_geometry(pair, detail::curvatures(pair, p));
@@ -67,12 +52,12 @@ std::unique_ptr<NormalForceModel> make_viscoelastic_force(const HertzGeometry& g
 Model make_hertz(const Pair& pair, const Parameters& p) { return hertz_type(pair, p, 0.0, "hertz"); }
 
 std::shared_ptr<const ContactLaw> hertz_contact(const Pair& pair, const Parameters&) {
-  return std::make_shared<ViscoelasticContact>(pair.effective_modulus(), 0.0);
+  return std::make_shared<detail::HertzTypeContact<viscoelastic_force>>(pair.effective_modulus(), 0.0);
 }
 
 std::shared_ptr<const ContactLaw> viscoelastic_contact(const Pair& pair, const Parameters& p) {
-  return std::make_shared<ViscoelasticContact>(pair.effective_modulus(),
-                                               detail::dissipative_constant(pair, p, "viscoelastic"));
+  return std::make_shared<detail::HertzTypeContact<viscoelastic_force>>(
+      pair.effective_modulus(), detail::dissipative_constant(pair, p, "viscoelastic"));
 }
 
 Model make_viscoelastic(const Pair& pair, const Parameters& p) {

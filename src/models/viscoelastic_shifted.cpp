@@ -31,26 +31,11 @@ class ShiftedViscoelasticForce final : public detail::HertzTypeForce {
   double a_;
 };
 
-// The same law per DEM contact: C0 = rho of BP04 (8.24) from the contact's R_eff.
-class ShiftedViscoelasticContact final : public ContactLaw {
- public:
-  ShiftedViscoelasticContact(double modulus, double a) : modulus_(modulus), a_(a) {}
-  double force(const ContactGeometry& g, double xi, double rate) const override {
-    return shifted_force(hertz_constant(modulus_, g.effective_radius), a_, xi, rate);
-  }
-  double energy(const ContactGeometry& g, double xi) const override {
-    return contact::hertz::elastic_energy(hertz_constant(modulus_, g.effective_radius), xi);
-  }
-
- private:
-  double modulus_, a_;
-};
-
 }  // namespace
 
 std::shared_ptr<const ContactLaw> viscoelastic_shifted_contact(const Pair& pair, const Parameters& p) {
-  return std::make_shared<ShiftedViscoelasticContact>(pair.effective_modulus(),
-                                                      detail::dissipative_constant(pair, p, "viscoelastic-shifted"));
+  return std::make_shared<detail::HertzTypeContact<shifted_force>>(
+      pair.effective_modulus(), detail::dissipative_constant(pair, p, "viscoelastic-shifted"));
 }
 
 std::unique_ptr<NormalForceModel> make_shifted_viscoelastic_force(const HertzGeometry& geometry,

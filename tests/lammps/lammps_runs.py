@@ -59,6 +59,20 @@ def printed(output, name):
     return float(match[-1])
 
 
+def preamble(box, types):
+    """An SI sphere system in a fixed cube of half-side `box` with `types` atom types, atoms
+    addressable by id (x[1], vx[2] in variables)."""
+    return f"""
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block {-box} {box} {-box} {box} {-box} {box}
+create_box {types} box
+"""
+
+
 def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", coeff=None, radius2=None,
             tangential_velocity=0.0):
     """A two-sphere collision in LAMMPS: `pair` holds the bodies (material[, material2],
@@ -82,14 +96,7 @@ def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", 
             {k: v for k, v in dict(materials, **model).items() if k != "model"})
     style, coeffs = coeff.split(" ", 1)
     plugin = f"plugin load {PLUGIN}" if pair_style.startswith("bounce") else ""
-    script = f"""
-units si
-atom_style sphere
-atom_modify map array
-boundary f f f
-comm_modify vel yes
-region box block {-box} {box} {-box} {box} {-box} {box}
-create_box 2 box
+    script = preamble(box, 2) + f"""
 create_atoms 1 single {-r1} 0 0
 create_atoms 2 single {r2} 0 0
 set atom 1 diameter {2 * r1} mass {m1}
@@ -227,14 +234,7 @@ def wall_collision(pair, model, velocity, steps_per_contact=1000, tangential_vel
     if wall_args is None:
         wall_args = f"zplane 0 NULL {model['model']} " + coeff_args(keys)
     box = 6 * r
-    script = f"""
-units si
-atom_style sphere
-atom_modify map array
-boundary f f f
-comm_modify vel yes
-region box block {-box} {box} {-box} {box} {-box} {box}
-create_box 1 box
+    script = preamble(box, 1) + f"""
 create_atoms 1 single 0 0 {r!r}
 set atom 1 diameter {2 * r!r} mass {m!r}
 velocity all set {tangential_velocity!r} 0 {-velocity!r}
