@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace bounce::lammps {
 
@@ -55,6 +56,11 @@ void clear(int& touch, double* history) {
 
 }  // namespace
 
+bool ContactForce::finite() const {
+  return std::isfinite(normal) && std::isfinite(tangential[0]) && std::isfinite(tangential[1]) &&
+         std::isfinite(tangential[2]);
+}
+
 ContactForce contact_step(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
                           double release, const StepSettings& s, int& touch, double* history) {
   ContactForce out;
@@ -77,9 +83,15 @@ ContactForce contact_step(const models::DemModel& law, const models::ContactGeom
   const double rate = -k.vn - (s.corrected ? 0.5 * s.dt * previous / g.effective_mass : 0.0);
   const double fn = normal_force(law, g, k.overlap, rate);
   if (s.update_history) history[last_force] = fn;
+  if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(g.effective_mass * k.overlap / fn) / s.dt;
   if (law.tangential) {
     if (s.update_history) turn_spring(k.n, history);
-    models::tangential_step(*law.tangential, fn, touching ? previous : fn, g.effective_mass, k.sliding, s.dt,
+    // The sliding in the tangent plane to round-off: its O(1e-16) normal part would otherwise
+    // grow the spring along n, which a tiny zeta0 turns into a normal force.
+    const double along = k.sliding[0] * k.n[0] + k.sliding[1] * k.n[1] + k.sliding[2] * k.n[2];
+    const double sliding[3] = {k.sliding[0] - along * k.n[0], k.sliding[1] - along * k.n[1],
+                               k.sliding[2] - along * k.n[2]};
+    models::tangential_step(*law.tangential, fn, touching ? previous : fn, g.effective_mass, sliding, s.dt,
                             s.update_history, history, out.tangential);
   }
   out.normal = fn;

@@ -11,6 +11,9 @@ namespace bounce::lammps {
 // Per contact: the tangential spring (models::tangential_step), then the last normal force.
 constexpr int history_size = 4;
 constexpr int last_force = 3;
+/// A contact whose elastic period pi sqrt(m_eff xi / F) is shorter than this many steps is
+/// reported (docs/lammps.md, Time step).
+constexpr double few_steps = 10.0;
 
 /// The contact's geometry and motion this step; n points from body 2 (atom j, the wall) to
 /// body 1 (atom i).
@@ -30,6 +33,10 @@ struct StepSettings {
 struct ContactForce {
   double normal = 0.0;                       ///< along n, positive: repulsive [N]
   double tangential[3] = {0.0, 0.0, 0.0};    ///< at the contact point [N]
+  /// pi sqrt(m_eff xi / F) / dt: the steps in a period of the contact's secant stiffness
+  /// F / xi (0 where F <= 0); a few steps cannot follow the law.
+  double period_steps = 0.0;
+  bool finite() const;
 };
 
 /// The force of a contact that exists (overlap > 0, or touching and overlap > release, with

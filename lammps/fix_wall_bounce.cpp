@@ -88,6 +88,7 @@ void FixWallBounce::init()
     error->all(FLERR, "fix wall/bounce needs units si (bounce's laws are in SI units), not units {}", update->unit_style);
   if (!utils::strmatch(update->integrate_style, "^verlet"))
     error->all(FLERR, "fix wall/bounce needs run_style verlet");
+  warned_ = false;
 }
 
 void FixWallBounce::setup(int vflag)
@@ -115,6 +116,10 @@ void FixWallBounce::post_force(int)
       const double distance = sign * (x[i][axis_] - position_[w]);
       const double overlap = radius[i] - distance;
       int touch = static_cast<int>(slot[0]);
+      if (distance <= 0.0) {  // the centre is behind the wall: no contact (as fix wall/gran)
+        for (int m = 0; m < values; m++) slot[m] = 0.0;
+        continue;
+      }
       if (!touch && overlap <= 0.0) continue;
       bounce::models::ContactGeometry g;
       g.effective_radius = radius[i];  // a flat wall
@@ -134,6 +139,20 @@ void FixWallBounce::post_force(int)
       const bounce::lammps::ContactForce c =
           bounce::lammps::contact_step(law, g, k, release, settings, touch, slot + 1);
       slot[0] = touch;
+      if (!c.finite())
+        error->one(FLERR,
+                   "fix wall/bounce: the force on atom {} is not finite (overlap {:.6g} m, rate {:.6g} m/s, dt {:.6g} "
+                   "s): the time step is too large for this law, or an input extreme (docs/lammps.md, Time step)",
+                   atom->tag[i], k.overlap, -k.vn, settings.dt);
+      if (c.period_steps > 0.0 && c.period_steps < bounce::lammps::few_steps && !warned_) {
+        warned_ = true;
+        error->warning(FLERR,
+                       "fix wall/bounce: the contact of atom {} with the wall (overlap {:.3g} m, force {:.3g} N) has a "
+                       "period of {:.3g} steps of dt = {:.6g} s; bounce's laws need 20 or more for a COR to 1e-4, and "
+                       "with fewer than about 5 a collision can gain energy: use a smaller time step (docs/lammps.md, "
+                       "Time step)",
+                       atom->tag[i], k.overlap, c.normal, c.period_steps, settings.dt);
+      }
       for (int d = 0; d < 3; d++) f[i][d] += k.n[d] * c.normal + c.tangential[d];
       // Torque (-R n) x F^T, with lever arm R (as pair_style bounce).
       const double *ft = c.tangential;

@@ -48,6 +48,7 @@ class FixWallBounce : public Fix {
   bool corrected_ = true;
   std::shared_ptr<const bounce::models::DemModel> law_;
   double **state_;  // [atom][wall * values + k]
+  bool warned_ = false;  // a contact too stiff for dt was reported in this run
 };
 
 }  // namespace LAMMPS_NS

@@ -42,8 +42,8 @@ const char *const dummy_id = "NEIGH_HISTORY_BOUNCE_DUMMY";
 const char *const history_id = "NEIGH_HISTORY_BOUNCE";
 }  // namespace
 
-// The law of one type pair, and what the user typed for it (types I I and J J with the same
-// inputs give I J the same law).
+// The law of one type pair, and its inputs as typed, in key order (types I I and J J with the
+// same keys and values give I J the same law).
 struct PairBounce::TypePair {
   bounce::models::DemModel law;
   std::string inputs;
@@ -88,6 +88,8 @@ void PairBounce::settings(int narg, char **arg)
 {
   corrected_ = true;
   if (narg == 0) return;
+  if (narg > 2 && std::strcmp(arg[0], "integration") == 0)
+    error->all(FLERR, "pair_style bounce: '{}' is invalid: expected nothing after integration corrected|plain", arg[2]);
   if (narg == 2 && std::strcmp(arg[0], "integration") == 0) {
     if (std::strcmp(arg[1], "corrected") == 0) return;
     if (std::strcmp(arg[1], "plain") == 0) {
@@ -120,7 +122,6 @@ void PairBounce::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
   bounce::api::Inputs inputs;
-  std::string typed = arg[2];
   inputs["model"] = std::string(arg[2]);
   for (int k = 3; k < narg; k += 2) {
     if (k + 1 >= narg)
@@ -129,10 +130,17 @@ void PairBounce::coeff(int narg, char **arg)
     if (inputs.count(arg[k]))
       error->all(FLERR, "pair_coeff {} {}: {} is given twice", arg[0], arg[1], arg[k]);
     inputs[arg[k]] = std::string(arg[k + 1]);
-    typed += std::string(" ") + arg[k] + " " + arg[k + 1];
+  }
+  // One atom type is one material: a pair of a type with itself takes no body 2 of its own.
+  if (std::max(ilo, jlo) <= std::min(ihi, jhi)) {
+    for (const char *key : {"material2", "E2", "nu2", "gamma2"})
+      if (inputs.count(key))
+        error->all(FLERR, "pair_coeff {} {}: {} = {} is invalid: expected none for a type with itself (one type, one "
+                   "material; give unlike types their own pair_coeff I J)",
+                   arg[0], arg[1], key, std::get<std::string>(inputs[key]));
   }
   auto entry = std::make_shared<TypePair>();
-  entry->inputs = typed;
+  for (const auto &[key, value] : inputs) entry->inputs += key + "=" + std::get<std::string>(value) + " ";
   try {
     entry->law = bounce::api::contact_law(inputs);
   } catch (const std::exception &e) {
@@ -166,6 +174,9 @@ void PairBounce::init_style()
   if (std::strcmp(update->unit_style, "si") != 0)
     error->all(FLERR, "pair_style bounce needs units si (bounce's laws are in SI units), not units {}",
                update->unit_style);
+  if (!utils::strmatch(update->integrate_style, "^verlet"))
+    error->all(FLERR, "pair_style bounce needs run_style verlet (its corrected integration is velocity Verlet's)");
+  warned_ = false;
 
   // A size neighbor list with history: the touch flag keeps adhesive contacts beyond
   // r = R_i + R_j, the three numbers the tangential spring.
@@ -197,6 +208,18 @@ double PairBounce::reach(int itype, int jtype, double radius_i, double radius_j)
   if (!l || radius_i <= 0.0 || radius_j <= 0.0) return 0.0;
   const bounce::models::ContactGeometry g{radius_i * radius_j / (radius_i + radius_j), 0.0};
   return -l->normal->release_overlap(g);
+}
+
+// A contact too stiff for the time step: reported once per run and rank, with the numbers.
+void PairBounce::coarse(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, tagint i, tagint j)
+{
+  if (warned_) return;
+  warned_ = true;
+  error->warning(FLERR,
+                 "pair_style bounce: the contact of atoms {} and {} (overlap {:.3g} m, force {:.3g} N) has a period of "
+                 "{:.3g} steps of dt = {:.6g} s; bounce's laws need 20 or more for a COR to 1e-4, and with fewer than "
+                 "about 5 a collision can gain energy: use a smaller time step (docs/lammps.md, Time step)",
+                 i, j, k.overlap, c.normal, c.period_steps, update->dt);
 }
 
 double PairBounce::init_one(int i, int j)
@@ -261,6 +284,9 @@ void PairBounce::compute(int eflag, int vflag)
       bounce::models::ContactGeometry g;
       g.effective_radius = radius[i] * radius[j] / radsum;
       g.effective_mass = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      if (rsq == 0.0)
+        error->one(FLERR, "pair_style bounce: atoms {} and {} are at the same place (no contact normal)", atom->tag[i],
+                   atom->tag[j]);
       const double r = std::sqrt(rsq), rinv = 1.0 / r;
       bounce::lammps::Kinematics k;
       k.n[0] = delx * rinv;
@@ -278,6 +304,13 @@ void PairBounce::compute(int eflag, int vflag)
       k.sliding[2] = vr[2] - k.vn * k.n[2] - (k.n[1] * wr[0] - k.n[0] * wr[1]);
       const double release = k.overlap > 0.0 ? 0.0 : law.normal->release_overlap(g);
       const bounce::lammps::ContactForce c = bounce::lammps::contact_step(law, g, k, release, settings, touch[jj], history);
+      if (!c.finite())
+        error->one(FLERR,
+                   "pair_style bounce: the force between atoms {} and {} is not finite (overlap {:.6g} m, rate {:.6g} "
+                   "m/s, dt {:.6g} s): the time step is too large for this law, or an input extreme (docs/lammps.md, "
+                   "Time step)",
+                   atom->tag[i], atom->tag[j], k.overlap, -k.vn, settings.dt);
+      if (c.period_steps > 0.0 && c.period_steps < bounce::lammps::few_steps) coarse(c, k, atom->tag[i], atom->tag[j]);
 
       const double *ft = c.tangential;
       const double fx = k.n[0] * c.normal + ft[0], fy = k.n[1] * c.normal + ft[1], fz = k.n[2] * c.normal + ft[2];

@@ -19,12 +19,17 @@ PairStyle(bounce,PairBounce);
 #include <string>
 #include <vector>
 
+#include "lmptype.h"
 #include "pair.h"
 
 namespace bounce::models {
 struct DemModel;
 struct ContactGeometry;
-}
+}  // namespace bounce::models
+namespace bounce::lammps {
+struct ContactForce;
+struct Kinematics;
+}  // namespace bounce::lammps
 
 namespace LAMMPS_NS {
 
@@ -46,12 +51,14 @@ class PairBounce : public Pair {
   struct TypePair;
   void allocate();
   double reach(int itype, int jtype, double radius_i, double radius_j) const;
+  void coarse(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, tagint i, tagint j);
 
   std::vector<std::shared_ptr<const TypePair>> laws_;  // [itype * (ntypes + 1) + jtype]
   class FixDummy *fix_dummy_;
   class FixNeighHistory *fix_history_;
   std::vector<double> max_radius_;  // per type, over all atoms
   bool corrected_ = true;           // pair_style bounce integration corrected | plain
+  bool warned_ = false;             // a contact too stiff for dt was reported in this run
 };
 
 }  // namespace LAMMPS_NS

@@ -136,7 +136,7 @@ CommandSpec lammps_command() {
   };
   CommandSpec c{"lammps", "Stock LAMMPS pair_style granular lines that best represent a model (docs/lammps.md)", true, true,
                 {type("type", "the first atom type of the pair_coeff line (default 1)"),
-                 type("type2", "the second atom type (default 1 for like bodies, else 2)")}};
+                 type("type2", "the second atom type (default: type for like bodies, else type + 1)")}};
   c.models = {"viscoelastic", "hertz", "jkr-viscoelastic"};
   c.models_why = "viscoelastic, hertz or jkr-viscoelastic (the models stock LAMMPS has; pair_style bounce has every "
                  "other but krijt)";

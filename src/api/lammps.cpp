@@ -1,6 +1,7 @@
 // LAMMPS's pair_coeff as a front-door command: a pair of materials and a model, by the CLI's
 // names and checked by its rules, made into a DEM contact law (docs/lammps.md).
 #include <cmath>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -142,12 +143,12 @@ Export export_lines(const Case& c, long type1, long type2) {
                           "earlier, at the pull-off point: its COR is higher and its sticking velocity lower (as "
                           "bounce --contact-end pull-off; pair_style bounce has both)");
     }
-    out.mapping.set("end", "pull-off");
+    out.mapping.set("lammps_end", "pull-off");
   } else {
     coeff = "hertz/material " + moduli(pair, like, out);
     const bool force = model.end_rule == models::EndRule::force;
     if (force) extra = " limit_damping";
-    out.mapping.set("end", force ? "force (limit_damping)" : "overlap");
+    out.mapping.set("lammps_end", force ? "force (limit_damping)" : "overlap");
   }
   const std::size_t at = coeff.find("{damping}");
   coeff.replace(at, 9, exact(eta));
@@ -167,11 +168,17 @@ Export export_lines(const Case& c, long type1, long type2) {
 Record lammps_export(const Inputs& inputs) {
   const detail::Bound b = detail::bind_inputs(command("lammps"), inputs);
   const Case c = detail::make_case(b);
-  const long type1 = static_cast<long>(b.own.real("type").value_or(1.0));
   const bool like_bodies = c.pair.body1().material.youngs_modulus == c.pair.body2().material.youngs_modulus &&
                            c.pair.body1().material.poisson_ratio == c.pair.body2().material.poisson_ratio &&
                            c.pair.body1().material.surface_energy == c.pair.body2().material.surface_energy;
-  const long type2 = static_cast<long>(b.own.real("type2").value_or(like_bodies ? 1.0 : 2.0));
+  // One atom type is one material: unlike bodies are two types. LAMMPS wants I <= J.
+  long type1 = static_cast<long>(b.own.real("type").value_or(1.0));
+  long type2 = static_cast<long>(b.own.real("type2").value_or(static_cast<double>(like_bodies ? type1 : type1 + 1)));
+  if (!like_bodies && type1 == type2) {
+    throw InvalidArgument("type2", b.own.given("type2") ? b.own.typed("type2") : std::to_string(type2),
+                          fmt::format("a type other than type = {} for unlike bodies (one atom type, one material)", type1));
+  }
+  if (type1 > type2) std::swap(type1, type2);
   const Export e = export_lines(c, type1, type2);
   std::string script = fmt::format("# bounce lammps: model {} as stock LAMMPS (pair_style granular, 29Sep2021)\n",
                                    c.model.name);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 
 #include <fmt/format.h>
@@ -60,7 +61,10 @@ std::vector<ParameterSpec> every_model() {
                               "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
                {1e-4, 1.0, 100, "E_soft"}),
       real_parameter("friction", "friction coefficient mu", "", non_negative(), "friction coefficient mu (BSHP96 (36))"),
-      real_parameter("asperity", "asperity size zeta0", "m", positive(),
+      // At least 1e-20 m, far below any roughness (the property tests reach 5e-15 m: 1e-7 of a
+      // 50 nm R_eff): 1e-300 m made the spring's stiffness mu F^N / zeta0 overflow (found trying
+      // the LAMMPS plugin as a new user).
+      real_parameter("asperity", "asperity size zeta0", "m", Range{1e-20, std::numeric_limits<double>::infinity(), true},
                      "asperity size zeta0 [m] (BSHP96 (32); asperity law)"),
       choice_parameter("tangential_law", {"asperity", "step"}, "asperity (BSHP96 (35), default) | step (BSHP96 (39))"),
       choice_parameter("asperity_form", {"published", "passive"},

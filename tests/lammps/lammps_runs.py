@@ -92,9 +92,9 @@ def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", 
     u1, u2 = tangential_velocity * m2 / (m1 + m2), -tangential_velocity * m1 / (m1 + m2)
     materials = {k: v for k, v in pair.items() if not k.startswith("radius")}
     if coeff is None:
-        coeff = "bounce " + model_name(model) + " " + coeff_args(
-            {k: v for k, v in dict(materials, **model).items() if k != "model"})
-    style, coeffs = coeff.split(" ", 1)
+        coeffs = pair_coeffs(materials, model)
+    else:
+        coeffs = "pair_coeff * * " + coeff.split(" ", 1)[1]
     plugin = f"plugin load {PLUGIN}" if pair_style.startswith("bounce") else ""
     script = preamble(box, 2) + f"""
 create_atoms 1 single {-r1} 0 0
@@ -106,7 +106,7 @@ set atom 1 vx {v1!r} vy {u1!r}
 set atom 2 vx {v2!r} vy {u2!r}
 {plugin}
 pair_style {pair_style}
-pair_coeff * * {coeffs}
+{coeffs}
 neighbor {max(r1, r2) * 0.1} bin
 timestep {dt!r}
 fix 1 all nve/sphere
@@ -140,8 +140,19 @@ print "STATE $(x[1]:%.17g) $(y[1]:%.17g) $(vx[1]:%.17g) $(vy[1]:%.17g) $(v_w1:%.
 
 
 
-def model_name(model):
-    return model["model"]
+BODY2 = {"material2": "material", "E2": "E", "nu2": "nu", "gamma2": "gamma"}
+
+
+def pair_coeffs(materials, model):
+    """pair_coeff lines of pair_style bounce for atom types 1 (body 1) and 2 (body 2): each type
+    with itself takes its own material (one type, one material), 1 2 takes both."""
+    name = model["model"]
+    rest = {k: v for k, v in model.items() if k != "model"}
+    body1 = {k: v for k, v in materials.items() if k not in BODY2}
+    body2 = dict(body1, **{BODY2[k]: v for k, v in materials.items() if k in BODY2})
+    return "\n".join([f"pair_coeff 1 1 {name} {coeff_args(dict(body1, **rest))}",
+                      f"pair_coeff 2 2 {name} {coeff_args(dict(body2, **rest))}",
+                      f"pair_coeff 1 2 {name} {coeff_args(dict(materials, **rest))}"])
 
 
 def order(errors, factor=2.0):
@@ -199,6 +210,8 @@ def thermo_rows(output):
             reading = True
             continue
         if reading:
+            if line.startswith("WARNING"):  # LAMMPS's warnings can come inside the table
+                continue
             parts = line.split()
             try:
                 rows.append(tuple(float(p) for p in parts))

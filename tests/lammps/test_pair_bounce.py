@@ -140,6 +140,8 @@ run 0
     ("pair_coeff * * jkr-viscoelastic material ice-bshp96 tvis 1e-11", "gamma"),
     ("pair_coeff 1 1 hertz material ice-bshp96\npair_coeff 2 2 hertz material quartz", "no pair_coeff 1 2"),
     ("pair_coeff * * hertz material ice-bshp96 E nan", "E = nan is invalid"),
+    ("pair_coeff * * hertz material ice-bshp96 material2 quartz", "material2 = quartz is invalid"),
+    ("pair_coeff * * viscoelastic material ice-bshp96 A 1e-5 friction 0.3 asperity 1e-300", "asperity = 1e-300 is invalid"),
 ])
 def test_bad_pair_coeff_stops_lammps_naming_it(coeffs, expected):
     """The CLI's rules in pair_coeff: LAMMPS stops with an ERROR naming the input."""
@@ -163,3 +165,55 @@ def test_units_must_be_si():
     code, output = L.run_lammps(script.replace("units si", "units cgs"), check=False)
     errors = [line for line in output.splitlines() if line.startswith("ERROR")]
     assert code != 0 and errors and "units si" in errors[0], output[-2000:]
+
+
+def test_same_keys_in_another_order_share_a_law():
+    """pair_coeff 1 1 and 2 2 with the same keys and values in another order give 1 2 their law."""
+    coeffs = ("pair_coeff 1 1 viscoelastic material ice-bshp96 A 1e-5\n"
+              "pair_coeff 2 2 viscoelastic A 1e-5 material ice-bshp96")
+    code, output = L.run_lammps(COLLISION.format(plugin=L.PLUGIN, style="bounce", coeffs=coeffs), check=False)
+    assert code == 0, output[-2000:]
+
+
+STEP = L.preamble(0.1, 1) + """
+create_atoms 1 single -0.01 0 0
+create_atoms 1 single {x} 0 0
+set type 1 diameter 0.02 density 1000
+set atom 1 vx {v}
+plugin load {plugin}
+pair_style bounce
+pair_coeff * * viscoelastic material ice-bshp96 A {a}
+fix 1 all nve/sphere
+timestep {dt}
+run {steps}
+"""
+
+
+def test_too_large_a_step_is_reported():
+    """A contact of a few steps (t_c = 9.7e-5 s at 1 m/s, dt = 3e-5 s) gives one WARNING naming the
+    atoms and dt; a step that makes the force infinite (A = 1e308) stops LAMMPS naming the atoms;
+    and so do two atoms at the same place."""
+    code, output = L.run_lammps(STEP.format(x=0.01, v=1.0, a=1e-5, dt=3e-5, steps=40, plugin=L.PLUGIN))
+    warnings = [line for line in output.splitlines() if line.startswith("WARNING") and "steps of dt" in line]
+    assert len(warnings) == 1 and ("atoms 1 and 2" in warnings[0] or "atoms 2 and 1" in warnings[0]), output[-2000:]
+    code, output = L.run_lammps(STEP.format(x=0.01, v=1.0, a=1e308, dt=1e-7, steps=100, plugin=L.PLUGIN), check=False)
+    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    assert code != 0 and errors and "not finite" in errors[0], output[-2000:]
+    code, output = L.run_lammps(STEP.format(x=-0.01, v=0.0, a=1e-5, dt=1e-7, steps=1, plugin=L.PLUGIN), check=False)
+    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    assert code != 0 and errors and "same place" in errors[0], output[-2000:]
+
+
+def test_export_types():
+    """`bounce lammps` writes pair_coeff I J with I <= J, and refuses one type for two materials."""
+    import json
+    out = subprocess.run([L.CLI, "lammps", "--model", "viscoelastic", "--material", "ice-bshp96", "--radius", "0.01",
+                          "--A", "1e-5", "--type", "2", "--json"], capture_output=True, text=True, check=True)
+    assert json.loads(out.stdout)["pair_coeff"][0].startswith("pair_coeff 2 2 ")
+    out = subprocess.run([L.CLI, "lammps", "--model", "viscoelastic", "--material", "ice-bshp96", "--material2", "quartz",
+                          "--radius", "0.01", "--A", "1e-5", "--type", "3", "--type2", "1", "--json"],
+                         capture_output=True, text=True, check=True)
+    assert json.loads(out.stdout)["pair_coeff"][0].startswith("pair_coeff 1 3 ")
+    out = subprocess.run([L.CLI, "lammps", "--model", "viscoelastic", "--material", "ice-bshp96", "--material2", "quartz",
+                          "--radius", "0.01", "--A", "1e-5", "--type2", "1"], capture_output=True, text=True)
+    assert out.returncode == 2 and "--type2 = 1 is invalid" in out.stderr, out.stderr

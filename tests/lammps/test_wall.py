@@ -61,3 +61,21 @@ run 0
     code, output = L.run_lammps(script, check=False)
     errors = [line for line in output.splitlines() if line.startswith("ERROR")]
     assert code != 0 and errors and expected in errors[0], output[-2000:]
+
+
+def test_atom_behind_the_wall_feels_nothing():
+    """An atom whose centre is behind the wall (here 5 cm below a floor at z = 0) keeps still."""
+    script = L.preamble(0.2, 1) + f"""
+create_atoms 1 single 0 0 -0.05
+set type 1 diameter 0.02 density 1000
+plugin load {L.PLUGIN}
+pair_style bounce
+pair_coeff * * viscoelastic material ice-bshp96 A 1e-5
+fix 1 all nve/sphere
+fix 2 all wall/bounce zplane 0.0 NULL viscoelastic material ice-bshp96 A 1e-5
+timestep 1e-6
+run 100
+print "VZ $(vz[1]:%.17g)"
+"""
+    _, output = L.run_lammps(script)
+    assert L.printed(output, "VZ") == 0.0
