@@ -15,7 +15,6 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
 #include "memory.h"
@@ -57,7 +56,7 @@ PairBounce::PairBounce(LAMMPS *instance) : Pair(instance), fix_history_(nullptr)
   no_virial_fdotr_compute = 1;
   // A placeholder for the history fix, replaced in init_style, so that the fix list keeps the
   // order of the input script (as pair granular does).
-  fix_dummy_ = dynamic_cast<FixDummy *>(modify->add_fix(std::string(dummy_id) + " all DUMMY"));
+  modify->add_fix(std::string(dummy_id) + " all DUMMY");
 }
 
 PairBounce::~PairBounce()
@@ -179,7 +178,7 @@ void PairBounce::init_style()
   warned_ = false;
 
   // A size neighbor list with history: the touch flag keeps adhesive contacts beyond
-  // r = R_i + R_j, the three numbers the tangential spring.
+  // r = R_i + R_j; the values are the tangential spring and the last normal force.
 #if BOUNCE_LAMMPS_ADD_REQUEST
   neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
 #else
@@ -191,7 +190,6 @@ void PairBounce::init_style()
     fix_history_ = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
         dummy_id, std::string(history_id) + " all NEIGH_HISTORY " + std::to_string(history_size), 1));
     fix_history_->pair = this;
-    fix_dummy_ = nullptr;
   }
 
   // The largest radius of each type (the cutoffs, and the reach of adhesive contacts).

@@ -54,7 +54,6 @@ class PairBounce : public Pair {
   void coarse(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, tagint i, tagint j);
 
   std::vector<std::shared_ptr<const TypePair>> laws_;  // [itype * (ntypes + 1) + jtype]
-  class FixDummy *fix_dummy_;
   class FixNeighHistory *fix_history_;
   std::vector<double> max_radius_;  // per type, over all atoms
   bool corrected_ = true;           // pair_style bounce integration corrected | plain
