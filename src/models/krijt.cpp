@@ -1,10 +1,12 @@
 #include "bounce/models/krijt.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 #include <numbers>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/tools/roots.hpp>
 #include <fmt/format.h>
 
 #include "bounce/contact/independent.hpp"
@@ -65,6 +67,36 @@ double krijt_hysteresis_estimate(const KrijtParameters& p, double speed) {
   const double phi = a / (p.crack_speed_scale() * t_c);
   const double energy = 0.5 * p.effective_mass * speed * speed;
   return 2.0 * pi * a * a * p.surface_energy / energy * std::pow(phi / 0.39, 1.0 / 1.14);
+}
+
+CrackStep krijt_crack_step(const KrijtParameters& p, double a_old, double delta, double dt) {  // K13 (14)-(17)
+  const double c = p.crack_speed_scale(), top = (1.0 - 1e-6) / p.k, bottom = p.k * (1.0 + 1e-12);
+  auto beta = [&](double a) { return effective_surface_energy_ratio(p, a, delta); };
+  auto h = [&](double a) {
+    return a - a_old - dt * c * crack_speed_function(std::clamp(beta(a), bottom, top), p.k).value;
+  };
+  const auto tolerance = boost::math::tools::eps_tolerance<double>(50);
+  std::uintmax_t iterations = 200;
+  if (beta(a_old) >= top) return {0.0, true};
+  if (h(a_old) <= 0.0) {  // the contact grows: h increases above a_old (beta grows with a there)
+    double hi = 2.0 * a_old;
+    while (h(hi) <= 0.0) hi *= 2.0;
+    const auto [x0, x1] = boost::math::tools::toms748_solve(h, a_old, hi, tolerance, iterations);
+    return {0.5 * (x0 + x1), false};
+  }
+  // It shrinks: march down from a_old to the first sign change, unless beta reaches 1/k first
+  // (below the minimum of beta(a) the opening crack accelerates: K13's run-away).
+  double above = a_old;
+  for (double s = 1e-12; s < 1.0; s *= 1.5) {
+    const double a = a_old * (1.0 - s);
+    if (beta(a) >= top) return {0.0, true};
+    if (h(a) <= 0.0) {
+      const auto [x0, x1] = boost::math::tools::toms748_solve(h, a, above, tolerance, iterations);
+      return {0.5 * (x0 + x1), false};
+    }
+    above = a;
+  }
+  return {0.0, true};
 }
 
 InitialContact krijt_initial_contact(const KrijtParameters& p) {  // K13 appendix B

@@ -54,6 +54,18 @@ double krijt_hysteresis_estimate(const KrijtParameters& p, double speed);
 /// the measured difference there is below the full model's integration error (~1e-8).
 constexpr double krijt_reduction_threshold = 1e-11;
 
+/// K13's crack law (14)-(17) over one step dt of a DEM code, with the overlap at the step's end:
+/// backward Euler in a, a - a_old = dt c f(beta(a, delta)), c of (16), taking the root connected
+/// to a_old (above it where the contact grows; where it shrinks, the first one below it). It is
+/// stable for any c dt: as c dt -> inf, f(beta) -> 0 and a goes to the JKR equilibrium (the
+/// fast-crack limit). `broken`: beta reaches (1 - 1e-6)/k before a root, the crack runs away
+/// inside the step and the contact ends (K13's end, as dynamics::integrate_krijt_collision's).
+struct CrackStep {
+  double contact_radius = 0.0;
+  bool broken = false;
+};
+CrackStep krijt_crack_step(const KrijtParameters& p, double contact_radius, double overlap, double dt);
+
 struct InitialContact {
   double contact_radius = 0.0;
   double time = 0.0;
