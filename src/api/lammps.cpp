@@ -1,8 +1,8 @@
-// LAMMPS's pair_coeff as a front-door command: a pair of materials and a model, by the CLI's
-// names and checked by its rules, made into a DEM contact law (docs/lammps.md).
-#include <cmath>
-#include <utility>
+// The front door's LAMMPS side (docs/lammps.md): pair_coeff and fix wall/bounce, a pair of
+// materials and a model by the CLI's names and rules made into a DEM contact law; and
+// `bounce lammps`, the stock pair_style granular lines that best represent a model.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
