@@ -48,6 +48,8 @@ double separation_overlap(const Parameters& p) {
   return overlap(p, separation_contact_radius(p));
 }
 
+double pull_off_overlap(const Parameters& p) { return overlap(p, pull_off_contact_radius(p)); }  // K13 (8)
+
 double contact_radius_from_force(const Parameters& p, double f) {  // BP04 (8.47), K13 notation
   const double R = p.effective_radius;
   const double adhesion = 3.0 * pi * p.surface_energy * R;

@@ -23,8 +23,7 @@ using State = detail::State<3>;  // delta / L, rate / g, bulk dissipation / E0
 // Where the contact breaks: at the fold delta_c (d delta / da = 0, the end K13 (25) assumes) or,
 // as LAMMPS's `pair granular jkr` ends it, at the pull-off point (dF/da = 0, F = -(3/2) pi gamma R).
 double release_overlap(const contact::jkr::Parameters& p, AdhesiveRelease release) {
-  return release == AdhesiveRelease::pull_off ? contact::jkr::overlap(p, contact::jkr::pull_off_contact_radius(p))
-                                              : contact::jkr::separation_overlap(p);
+  return release == AdhesiveRelease::pull_off ? contact::jkr::pull_off_overlap(p) : contact::jkr::separation_overlap(p);
 }
 
 // The events of the collision (their ids).

@@ -164,8 +164,7 @@ class JkrViscoelasticContact final : public ContactLaw {
   }
   double release_overlap(const ContactGeometry& g) const override {
     const contact::jkr::Parameters j = jkr(at(g));
-    return pull_off_ ? contact::jkr::overlap(j, contact::jkr::pull_off_contact_radius(j))
-                     : contact::jkr::separation_overlap(j);
+    return pull_off_ ? contact::jkr::pull_off_overlap(j) : contact::jkr::separation_overlap(j);
   }
 
  private:

@@ -32,6 +32,9 @@ double separation_contact_radius(const Parameters& p);
 /// The overlap there, delta_c = -(3/4) (pi^2 gamma^2 R / E*^2)^{1/3}: the most
 /// negative overlap at which the spheres still touch.
 double separation_overlap(const Parameters& p);
+/// The overlap at pull-off, K13 (8) at the pull-off radius: where LAMMPS's pair granular jkr
+/// ends a contact (contact_end pull-off), before the fold delta_c.
+double pull_off_overlap(const Parameters& p);
 /// Inverse of (9) on the stable branch: BP04 (8.47) in K13 notation,
 /// a^3 = (3R/4E*) (F + 3 pi gamma R + sqrt(6 pi gamma R F + (3 pi gamma R)^2)), F >= F_c.
 double contact_radius_from_force(const Parameters& p, double force);
