@@ -20,10 +20,6 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-constexpr int size = 2 * 5;  // two walls, FixWallBounce::values each
-}
-
 FixWallBounce::FixWallBounce(LAMMPS *instance, int narg, char **arg) : Fix(instance, narg, arg), state_(nullptr)
 {
   if (narg < 7)
@@ -165,32 +161,32 @@ void FixWallBounce::post_force(int)
 
 double FixWallBounce::memory_usage()
 {
-  return static_cast<double>(atom->nmax) * size * sizeof(double);
+  return static_cast<double>(atom->nmax) * size_ * sizeof(double);
 }
 
 void FixWallBounce::grow_arrays(int nmax)
 {
-  memory->grow(state_, nmax, size, "fix_wall_bounce:state");
+  memory->grow(state_, nmax, size_, "fix_wall_bounce:state");
 }
 
 void FixWallBounce::copy_arrays(int i, int j, int)
 {
-  for (int m = 0; m < size; m++) state_[j][m] = state_[i][m];
+  for (int m = 0; m < size_; m++) state_[j][m] = state_[i][m];
 }
 
 void FixWallBounce::set_arrays(int i)
 {
-  for (int m = 0; m < size; m++) state_[i][m] = 0.0;
+  for (int m = 0; m < size_; m++) state_[i][m] = 0.0;
 }
 
 int FixWallBounce::pack_exchange(int i, double *buf)
 {
-  for (int m = 0; m < size; m++) buf[m] = state_[i][m];
-  return size;
+  for (int m = 0; m < size_; m++) buf[m] = state_[i][m];
+  return size_;
 }
 
 int FixWallBounce::unpack_exchange(int nlocal, double *buf)
 {
-  for (int m = 0; m < size; m++) state_[nlocal][m] = buf[m];
-  return size;
+  for (int m = 0; m < size_; m++) state_[nlocal][m] = buf[m];
+  return size_;
 }

@@ -42,6 +42,7 @@ class FixWallBounce : public Fix {
 
  private:
   static constexpr int values = 5;  // per atom and wall: the touch flag, then the contact's history (4)
+  static constexpr int size_ = 2 * values;  // per atom: two walls
   int axis_;
   bool has_[2];
   double position_[2];
