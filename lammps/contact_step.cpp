@@ -54,6 +54,189 @@ void clear(int& touch, double* history) {
   for (int k = 0; k < history_size; k++) history[k] = 0.0;
 }
 
+// The tangential force, of the normal force fn (previous: the last step's).
+void tangential(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
+                const StepSettings& s, double fn, double previous, double* history, ContactForce& out) {
+  if (!law.tangential) return;
+  if (s.update_history) turn_spring(k.n, history);
+  // The sliding in the tangent plane to round-off: its O(1e-16) normal part would otherwise
+  // grow the spring along n, which a tiny zeta0 turns into a normal force.
+  const double along = k.sliding[0] * k.n[0] + k.sliding[1] * k.n[1] + k.sliding[2] * k.n[2];
+  const double sliding[3] = {k.sliding[0] - along * k.n[0], k.sliding[1] - along * k.n[1],
+                             k.sliding[2] - along * k.n[2]};
+  models::tangential_step(*law.tangential, fn, previous, g.effective_mass, sliding, s.dt, s.update_history, history,
+                          out.tangential);
+}
+
+/* A crack law's contact (krijt, docs/lammps.md, K13's contact in LAMMPS). Its radius a is the
+   history's; each step moves it to the step's overlap by the law's stable update, then
+     F = F_E(a, xi) + D(a) xi',
+   with xi' at t_n taken implicitly, as the trapezoidal rule does: xi'_n = -v_n - (dt/2) F_n / m_eff
+   with the half-step v_n LAMMPS has, solved for xi'_n since F is linear in it. An explicit rate
+   would be unstable once D dt / m_eff > 2 (T_vis >~ 1e-9 s for micrometre ice at t_H/100).
+   The contact forms at overlap 0 (K13 appendix B) and ends where the crack runs away, wherever
+   the overlap is then. With `corrected`, the step where it forms gets the impulse of the part
+   phi dt it lasted by Simpson's rule, as contact_step's; the step where it breaks that of the
+   part theta dt before the break, theta found by bisection (once per contact). */
+ContactForce crack_step(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
+                        const StepSettings& s, int& touch, double* history) {
+  const models::CrackContactLaw& crack = *law.crack;
+  ContactForce out;
+  const bool touching = touch != 0;
+  if (!touching && k.overlap <= 0.0) {
+    clear(touch, history);
+    return out;
+  }
+  const double before = k.overlap + s.dt * k.vn;  // the overlap at the step before
+  const double m = g.effective_mass;
+  // The rate at t_n of a force F_E + D xi' (the trapezoidal rule), or LAMMPS's half-step one.
+  auto rate = [&](double elastic, double damping) {
+    return s.corrected ? (-k.vn - 0.5 * s.dt * elastic / m) / (1.0 + 0.5 * s.dt * damping / m) : -k.vn;
+  };
+  // The bulk force's power D xi'^2 at overlap xi.
+  auto bulk_at = [&](double xi, const models::CrackState& state) {
+    const double elastic = crack.elastic_force(g, xi, state), damping = crack.damping(g, state);
+    const double r = rate(elastic, damping);
+    return damping * r * r;
+  };
+  auto force_at = [&](double xi, const models::CrackState& state) {
+    const double elastic = crack.elastic_force(g, xi, state), damping = crack.damping(g, state);
+    return elastic + damping * rate(elastic, damping);
+  };
+
+  models::CrackState state{history[crack_state], history[crack_state + 1], history[crack_state + 2]};
+  double formation_impulse = 0.0;  // over the part of the step since the contact formed, / dt
+  double lent = 0.0;                // see below
+  double formation_bulk = 0.0;      // the bulk force's work since the contact formed
+  const double owed = touching && s.update_history ? history[lent_force] : 0.0;
+  models::CrackAdvance advance;
+  double phi = 1.0;  // the part of the step the contact lasted
+  if (!touching) {
+    // It formed phi dt before now (K13 appendix B), at overlap 0, and its crack is fastest
+    // there. Its radius moves through stretches of that time that double from 2^-20 of it to
+    // 1/32, then stretches of 1/32 (BDF2's second order needs a uniform step): 46 crack steps,
+    // once per contact. One step of backward Euler would leave a 15 % short of the crack law's
+    // at t_H/100 (micrometre ice, T_vis = 1e-12 s), doubling stretches to the end 3 % short.
+    // The energy the crack releases is counted where it moves, and the impulse of the step is
+    // the trapezoidal rule's on the same stretches, so that the work of the elastic force is
+    // the one the energy budget counts.
+    double released = 0.0;
+    state = crack.form(g, released);
+    if (s.corrected && before < 0.0) phi = k.overlap / (k.overlap - before);
+    models::CrackState previous_state = state;
+    double from = 0.0;
+    for (int j = -20; from < 1.0 && !advance.broken; j++) {
+      const double to = j <= -5 ? std::ldexp(1.0, j) : from + 1.0 / 32.0;
+      const models::CrackAdvance a =
+          crack.advance(g, from * k.overlap, to * k.overlap, (to - from) * phi * s.dt, state);
+      released += a.dissipated;
+      advance.broken = a.broken;
+      if (s.corrected) {
+        const double mean = 0.5 * (force_at(from * k.overlap, previous_state) + force_at(to * k.overlap, state));
+        formation_impulse += mean * (to - from) * phi;
+        lent += mean * (to - from) * phi * (1.0 - 0.5 * (from + to)) * phi;
+      }
+      // The bulk force's work on the same stretches (a grows fastest first: a straight line
+      // from 0 to its end value missed 1e-2 of the impact energy at T_vis = 1e-10 s).
+      formation_bulk += 0.5 * (bulk_at(from * k.overlap, previous_state) + bulk_at(to * k.overlap, state)) *
+                        (to - from) * phi * s.dt;
+      previous_state = state;
+      from = to;
+    }
+    advance.dissipated = released;
+  } else if (s.update_history) {
+    advance = crack.advance(g, before, k.overlap, s.dt, state);
+  }
+  if (s.update_history) out.crack_dissipated = advance.dissipated;
+
+  if (advance.broken) {  // K13's end, inside this step
+    if (touching && s.corrected) {
+      // The crack runs away inside the step: from the last step's state it moves through 16
+      // stretches of the step (K13's run-away is steep, one crack step of the whole would time
+      // it badly), and in the stretch where it breaks the break is found by bisection. The
+      // impulse up to there is the trapezoidal rule's on the stretches, less the F_{n-1} dt/2
+      // the last step already gave; all the energy of the contact at the break is the crack's.
+      models::CrackState now{history[crack_state], history[crack_state + 1], history[crack_state + 2]};
+      const double f_last = history[last_force];
+      auto overlap_at = [&](double theta) { return before + theta * (k.overlap - before); };
+      double impulse = 0.0, released = 0.0, theta = 0.0, f_from = f_last, theta_end = 1.0;
+      constexpr double stretch = 1.0 / 16.0;
+      while (theta < 1.0) {
+        models::CrackState next = now;
+        const models::CrackAdvance a = crack.advance(g, overlap_at(theta), overlap_at(theta + stretch),
+                                                     stretch * s.dt, next);
+        if (a.broken) {
+          double lo = 0.0, hi = stretch;
+          for (int i = 0; i < 30; i++) {
+            const double mid = 0.5 * (lo + hi);
+            models::CrackState probe = now;
+            (crack.advance(g, overlap_at(theta), overlap_at(theta + mid), mid * s.dt, probe).broken ? hi : lo) = mid;
+          }
+          next = now;
+          released += crack.advance(g, overlap_at(theta), overlap_at(theta + lo), lo * s.dt, next).dissipated;
+          const double f_to = force_at(overlap_at(theta + lo), next);
+          impulse += 0.5 * lo * (f_from + f_to);
+          released += crack.elastic_energy(g, overlap_at(theta + lo), next) + crack.surface_energy(g, next);
+          theta_end = theta + lo;
+          break;
+        }
+        released += a.dissipated;
+        const double f_to = force_at(overlap_at(theta + stretch), next);
+        impulse += 0.5 * stretch * (f_from + f_to);
+        f_from = f_to;
+        now = next;
+        theta += stretch;
+      }
+      // (The stretches may hold the contact to the step's end where one step broke it: it ends
+      // there.)
+      if (theta >= 1.0) released += crack.elastic_energy(g, k.overlap, now) + crack.surface_energy(g, now);
+      out.normal = impulse - 0.5 * f_last - owed;
+      out.bulk_dissipated = 0.5 * theta_end * s.dt * history[last_bulk_force] * history[last_rate];
+      out.crack_dissipated = released;
+    }
+    clear(touch, history);
+    return out;
+  }
+
+  if (s.update_history) touch = 1;  // (in LAMMPS's setup a new contact forms at the first step)
+  const double elastic = crack.elastic_force(g, k.overlap, state), damping = crack.damping(g, state);
+  const double xi_rate = rate(elastic, damping);
+  const double fn = elastic + damping * xi_rate;
+  const double previous = history[last_force];
+  if (s.update_history) {
+    history[crack_state] = state.contact_radius;
+    history[crack_state + 1] = state.previous_radius;
+    history[crack_state + 2] = state.previous_step;
+    history[last_force] = fn;
+    // The bulk force's work as velocity Verlet does it: from t_{n-1} to t_n the kinetic energy
+    // at whole steps changes by exactly (dt/4)(F_{n-1} + F_n)(xi'_{n-1} + xi'_n), so that this
+    // part of it is the energy the bulk force took (a rectangle rule, D_n xi'_n^2 dt, is off by
+    // a first-order (dt/2) int D' xi'^2 dt as a grows: 1e-2 of the impact energy at t_H/100).
+    const double bulk = damping * xi_rate;
+    out.bulk_dissipated = touching ? 0.25 * s.dt * (history[last_bulk_force] + bulk) * (history[last_rate] + xi_rate)
+                                   : formation_bulk;
+    history[last_bulk_force] = bulk;
+    history[last_rate] = xi_rate;
+  }
+  out.elastic = crack.elastic_energy(g, k.overlap, state);
+  out.surface = crack.surface_energy(g, state);
+  if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(m * k.overlap / fn) / s.dt;
+  tangential(law, g, k, s, fn, touching ? previous : fn, history, out);
+  out.normal = fn;
+  // The forming step's impulse; and the displacement its force would have made by now, which
+  // the positions LAMMPS has at t_n lack (the force began before): (1/m) int (t_n - t) F dt, a
+  // few 1e-3 of the impact energy in a snap-on. It is lent as a force m eps / dt^2 that moves
+  // the pair by eps at the next step, which pays it back (momentum is unchanged after both).
+  if (s.corrected && !touching) {
+    out.normal = formation_impulse + 0.5 * fn + lent;
+    if (s.update_history) history[lent_force] = lent;
+  } else {
+    out.normal -= owed;
+    if (s.update_history) history[lent_force] = 0.0;
+  }
+  return out;
+}
+
 }  // namespace
 
 bool ContactForce::finite() const {
@@ -63,6 +246,7 @@ bool ContactForce::finite() const {
 
 ContactForce contact_step(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
                           double release, const StepSettings& s, int& touch, double* history) {
+  if (law.crack) return crack_step(law, g, k, s, touch, history);
   ContactForce out;
   const bool touching = touch != 0;
   const bool contact = k.overlap > 0.0 || (touching && k.overlap > release);
@@ -84,16 +268,7 @@ ContactForce contact_step(const models::DemModel& law, const models::ContactGeom
   const double fn = normal_force(law, g, k.overlap, rate);
   if (s.update_history) history[last_force] = fn;
   if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(g.effective_mass * k.overlap / fn) / s.dt;
-  if (law.tangential) {
-    if (s.update_history) turn_spring(k.n, history);
-    // The sliding in the tangent plane to round-off: its O(1e-16) normal part would otherwise
-    // grow the spring along n, which a tiny zeta0 turns into a normal force.
-    const double along = k.sliding[0] * k.n[0] + k.sliding[1] * k.n[1] + k.sliding[2] * k.n[2];
-    const double sliding[3] = {k.sliding[0] - along * k.n[0], k.sliding[1] - along * k.n[1],
-                               k.sliding[2] - along * k.n[2]};
-    models::tangential_step(*law.tangential, fn, touching ? previous : fn, g.effective_mass, sliding, s.dt,
-                            s.update_history, history, out.tangential);
-  }
+  tangential(law, g, k, s, fn, touching ? previous : fn, history, out);
   out.normal = fn;
   if (s.corrected && !touching) {  // formed inside the step, phi dt before now (or overlapping already)
     const double phi = before < 0.0 ? k.overlap / (k.overlap - before) : 1.0;

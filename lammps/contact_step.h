@@ -8,9 +8,15 @@
 
 namespace bounce::lammps {
 
-// Per contact: the tangential spring (models::tangential_step), then the last normal force.
-constexpr int history_size = 4;
+// Per contact: the tangential spring (models::tangential_step), the last normal force; for a
+// crack law (krijt), its state (models::CrackState, 3 values), the force its forming step lent,
+// and the last bulk force and overlap rate (for the energy it dissipates).
+constexpr int history_size = 10;
 constexpr int last_force = 3;
+constexpr int crack_state = 4;
+constexpr int lent_force = 7;
+constexpr int last_bulk_force = 8;
+constexpr int last_rate = 9;
 /// A contact whose elastic period pi sqrt(m_eff xi / F) is shorter than this many steps is
 /// reported (docs/lammps.md, Time step).
 constexpr double few_steps = 10.0;
@@ -36,13 +42,20 @@ struct ContactForce {
   /// pi sqrt(m_eff xi / F) / dt: the steps in a period of the contact's secant stiffness
   /// F / xi (0 where F <= 0); a few steps cannot follow the law.
   double period_steps = 0.0;
+  // A crack law's energies (0 for the others) [J]: released by the crack and by the bulk force in
+  // this step (0 in LAMMPS's setup), and stored in the contact at its end.
+  double crack_dissipated = 0.0;
+  double bulk_dissipated = 0.0;
+  double elastic = 0.0;
+  double surface = 0.0;
   bool finite() const;
 };
 
 /// The force of a contact that exists (overlap > 0, or touching and overlap > release, with
 /// release = law.normal->release_overlap(g)) or has just ended inside this step (touching and
 /// not beyond release; with `corrected` it then still gets its impulse's correction). Updates
-/// `touch` and the history (cleared when the contact ends).
+/// `touch` and the history (cleared when the contact ends). A crack law (law.crack) ends its
+/// contact itself, and ignores `release`.
 ContactForce contact_step(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
                           double release, const StepSettings& s, int& touch, double* history);
 

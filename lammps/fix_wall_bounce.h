@@ -18,6 +18,7 @@ FixStyle(wall/bounce,FixWallBounce);
 #include <memory>
 
 #include "fix.h"
+#include "contact_step.h"
 
 namespace bounce::models {
 struct DemModel;
@@ -41,7 +42,7 @@ class FixWallBounce : public Fix {
   int unpack_exchange(int, double *) override;
 
  private:
-  static constexpr int values = 5;  // per atom and wall: the touch flag, then the contact's history (4)
+  static constexpr int values = 1 + bounce::lammps::history_size;  // per atom and wall: the touch flag, the history
   static constexpr int size_ = 2 * values;  // per atom: two walls
   int axis_;
   bool has_[2];

@@ -54,6 +54,10 @@ PairBounce::PairBounce(LAMMPS *instance) : Pair(instance), fix_history_(nullptr)
   nondefault_history_transfer = 1;
   restartinfo = 0;
   no_virial_fdotr_compute = 1;
+  // compute pair bounce: krijt's energies, crack- and bulk-dissipated (on this rank, since the
+  // run began), elastic and surface (stored in its contacts now) [J].
+  nextra = 4;
+  pvector = new double[nextra]();
   // A placeholder for the history fix, replaced in init_style, so that the fix list keeps the
   // order of the input script (as pair granular does).
   modify->add_fix(std::string(dummy_id) + " all DUMMY");
@@ -62,6 +66,7 @@ PairBounce::PairBounce(LAMMPS *instance) : Pair(instance), fix_history_(nullptr)
 PairBounce::~PairBounce()
 {
   if (copymode) return;
+  delete[] pvector;
   if (fix_history_) modify->delete_fix(history_id);
   else modify->delete_fix(dummy_id);
   if (allocated) {
@@ -104,11 +109,11 @@ void PairBounce::settings(int narg, char **arg)
 }
 
 // The history is that of pair (i, j); seen from j it is (j, i): the spring turns round, the
-// normal force does not.
+// normal force and the crack's state do not.
 void PairBounce::transfer_history(double *source, double *target)
 {
   for (int k = 0; k < bounce::lammps::last_force; k++) target[k] = -source[k];
-  target[bounce::lammps::last_force] = source[bounce::lammps::last_force];
+  for (int k = bounce::lammps::last_force; k < history_size; k++) target[k] = source[k];
 }
 
 // pair_coeff I J MODEL key value ...: the CLI's names without dashes (docs/lammps.md).
@@ -205,7 +210,7 @@ double PairBounce::reach(int itype, int jtype, double radius_i, double radius_j)
   const bounce::models::DemModel *l = law(itype, jtype);
   if (!l || radius_i <= 0.0 || radius_j <= 0.0) return 0.0;
   const bounce::models::ContactGeometry g{radius_i * radius_j / (radius_i + radius_j), 0.0};
-  return -l->normal->release_overlap(g);
+  return -(l->crack ? l->crack->release_overlap(g) : l->normal->release_overlap(g));
 }
 
 // A contact too stiff for the time step: reported once per run and rank, with the numbers.
@@ -252,6 +257,7 @@ double PairBounce::init_one(int i, int j)
 void PairBounce::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (eflag) pvector[2] = pvector[3] = 0.0;  // the stored energies; 0 and 1 accumulate over the run
   bounce::lammps::StepSettings settings;
   settings.dt = update->dt;
   settings.update_history = !update->setupflag;
@@ -300,7 +306,7 @@ void PairBounce::compute(int eflag, int vflag)
       k.sliding[0] = vr[0] - k.vn * k.n[0] - (k.n[2] * wr[1] - k.n[1] * wr[2]);
       k.sliding[1] = vr[1] - k.vn * k.n[1] - (k.n[0] * wr[2] - k.n[2] * wr[0]);
       k.sliding[2] = vr[2] - k.vn * k.n[2] - (k.n[1] * wr[0] - k.n[0] * wr[1]);
-      const double release = k.overlap > 0.0 ? 0.0 : law.normal->release_overlap(g);
+      const double release = k.overlap > 0.0 || law.crack ? 0.0 : law.normal->release_overlap(g);
       const bounce::lammps::ContactForce c = bounce::lammps::contact_step(law, g, k, release, settings, touch[jj], history);
       if (!c.finite())
         error->one(FLERR,
@@ -327,7 +333,16 @@ void PairBounce::compute(int eflag, int vflag)
         f[j][2] -= fz;
         for (int d = 0; d < 3; d++) torque[j][d] -= radius[j] * tor[d];
       }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+      // A crack law's energies (krijt): the pair is computed twice, once on each side, when j is a
+      // ghost atom and newton pair is off.
+      const double share = newton_pair || j < nlocal ? 1.0 : 0.5;
+      pvector[0] += share * c.crack_dissipated;
+      pvector[1] += share * c.bulk_dissipated;
+      if (eflag) {
+        pvector[2] += share * c.elastic;
+        pvector[3] += share * c.surface;
+      }
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, c.elastic + c.surface, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
 }

@@ -139,7 +139,7 @@ CommandSpec lammps_command() {
                  type("type2", "the second atom type (default: type for like bodies, else type + 1)")}};
   c.models = {"viscoelastic", "hertz", "jkr-viscoelastic"};
   c.models_why = "viscoelastic, hertz or jkr-viscoelastic (the models stock LAMMPS has; pair_style bounce has every "
-                 "other but krijt)";
+                 "model)";
   c.unused = {{tangential_parameters(), "none with lammps: stock LAMMPS has no BSHP96 asperity law"},
               {{"yield"}, "none with lammps: plastic losses are a post-collision rule, not a LAMMPS contact force"},
               {{"method", "tolerance", "adhesive_tolerance", "curvature_radii", "curvature_radii2", "angle"},

@@ -23,10 +23,9 @@ CommandSpec make_pair_coeff_command() {
   CommandSpec c{"pair_coeff", "LAMMPS pair_style bounce: a model as the contact law of one pair of atom types", true,
                 true, {}};
   for (const auto& row : models::model_registry().rows()) {
-    if (row.contact_law) c.models.push_back(row.name);
+    if (row.dem()) c.models.push_back(row.name);
   }
-  c.models_why = fmt::format("a model with a DEM contact law: {} (krijt's crack law is not a LAMMPS contact law yet)",
-                             fmt::join(c.models, ", "));
+  c.models_why = fmt::format("a model with a DEM contact law: {}", fmt::join(c.models, ", "));
   c.unused = {
       {{"radius", "radius2", "density", "density2", "inertia", "inertia2"},
        "none in LAMMPS: each atom's radius and mass come from LAMMPS (atom_style sphere), and its moment of "
@@ -48,6 +47,13 @@ CommandSpec make_fix_wall_command() {
   // Body 2 is the wall: elastic, of material2 (or E2, nu2, gamma2; default body 1's), or
   // rigid_wall. `wall` itself is implied.
   c.unused[1] = {{"wall"}, "none in fix wall/bounce: its wall is body 2 (material2, E2, nu2, gamma2, or rigid_wall yes)"};
+  // A crack law's contact radius is per-contact history, which fix wall/bounce does not keep.
+  c.models.clear();
+  for (const auto& row : models::model_registry().rows()) {
+    if (row.contact_law) c.models.push_back(row.name);
+  }
+  c.models_why = fmt::format("a model with a DEM wall law: {} (krijt acts between atoms only, in pair_style bounce)",
+                             fmt::join(c.models, ", "));
   return c;
 }
 

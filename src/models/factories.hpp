@@ -24,5 +24,6 @@ std::shared_ptr<const ContactLaw> viscoelastic_shifted_contact(const Pair& pair,
 std::shared_ptr<const ContactLaw> power_law_contact(const Pair& pair, const Parameters& p);
 std::shared_ptr<const ContactLaw> adhesive_viscoelastic_contact(const Pair& pair, const Parameters& p);
 std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const Parameters& p);
+std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const Parameters& p);
 
 }  // namespace bounce::models

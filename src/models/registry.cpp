@@ -46,7 +46,7 @@ std::vector<ModelRow> builtin_rows() {
        {relaxation_time(), dissipative_constant(), z0()}, &make_jkr_viscoelastic, {"gamma", "tvis", "yield"}, &jkr_viscoelastic_contact},
       {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
        "K13 (2), (14)-(21), appendices B, C", Capabilities{.adhesive = true, .dynamic_contact = true, .stiff = true},
-       {relaxation_time(), dissipative_constant(), z0(), k()}, &make_krijt, {"gamma", "tvis", "yield"}},
+       {relaxation_time(), dissipative_constant(), z0(), k()}, &make_krijt, {"gamma", "tvis", "yield"}, {}, &krijt_crack_law},
   };
 }
 
@@ -200,17 +200,18 @@ Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
 
 DemModel make_contact_law(const Pair& pair, std::string_view name, const Parameters& p) {
   const ModelRow& row = model_registry().at(name);
-  if (!row.contact_law) {
+  if (!row.dem()) {
     std::vector<std::string> with;
     for (const ModelRow& r : model_registry().rows()) {
-      if (r.contact_law) with.push_back(r.name);
+      if (r.dem()) with.push_back(r.name);
     }
     throw InvalidArgument("model", row.name, fmt::format("a model with a DEM contact law: {}", fmt::join(with, ", ")));
   }
   DemModel m;
   m.name = row.name;
   m.end_rule = checked_end_rule(row, p.text("contact_end"));
-  m.normal = row.contact_law(pair, p);
+  if (row.contact_law) m.normal = row.contact_law(pair, p);
+  if (row.crack_law) m.crack = row.crack_law(pair, p);
   m.tangential = tangential_model(pair, p);
   return m;
 }

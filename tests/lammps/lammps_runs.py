@@ -270,3 +270,49 @@ print "STATE $(vx[1]:%.17g) $(vz[1]:%.17g) $(v_w:%.17g)"
     # Contact point velocity along x: vx + (omega x (-R z))_x = vx - R omega_y.
     eps_t = (vx - r * wy) / tangential_velocity if tangential_velocity else float("nan")
     return eps_n, eps_t, ref
+
+
+def krijt_collision(pair, model, velocity, steps_per_hertz_time=100, span=8.0, integration="corrected"):
+    """A head-on collision of two spheres touching at t = 0 in LAMMPS with pair_style bounce's
+    krijt (or another model), dt = t_H / steps_per_hertz_time with K13's Hertz time (22) at this
+    speed, run for `span` t_H. Returns a dict: cor (0 where the grains stick: their contact
+    still holds, pe != 0), closure (ke + pe + crack- and bulk-dissipated energy at the end,
+    less the impact energy, over it: compute pair bounce), stuck, and bounce's record `ref`."""
+    ref = bounce(*cli_args(dict(pair, **model)), "--velocity", str(velocity))
+    t_hertz = ref["closed_forms"]["hertz_time_k13_22"] if "closed_forms" in ref else ref["contact_time"]
+    b1, b2 = ref["pair"]["body1"], ref["pair"]["body2"]
+    r1, r2, m1, m2 = b1["radius"], b2["radius"], b1["mass"], b2["mass"]
+    dt = t_hertz / steps_per_hertz_time
+    steps = int(span * steps_per_hertz_time)
+    v1, v2 = velocity * m2 / (m1 + m2), -velocity * m1 / (m1 + m2)
+    materials = {k: v for k, v in pair.items() if not k.startswith("radius")}
+    script = preamble(4 * (r1 + r2), 2) + f"""
+create_atoms 1 single {-r1} 0 0
+create_atoms 2 single {r2} 0 0
+set atom 1 diameter {2 * r1} mass {m1}
+set atom 2 diameter {2 * r2} mass {m2}
+velocity all set 0 0 0
+set atom 1 vx {v1!r}
+set atom 2 vx {v2!r}
+plugin load {PLUGIN}
+pair_style bounce integration {integration}
+{pair_coeffs(materials, model)}
+neighbor {max(r1, r2) * 0.6} bin
+timestep {dt!r}
+fix 1 all nve/sphere
+compute e all pair bounce
+variable total equal ke+pe+c_e[1]+c_e[2]
+thermo_style custom step ke pe c_e[1] c_e[2] v_total
+thermo {steps}
+run {steps}
+print "STATE $(vx[1]:%.17g) $(vx[2]:%.17g) $(pe:%.17g) $(v_total:%.17g)"
+"""
+    _, output = run_lammps(script)
+    state = re.findall(r"^STATE (.*)$", output, re.M)
+    if not state:
+        raise RuntimeError(f"no final state in:\n{output[-3000:]}")
+    vx1, vx2, pe, total = map(float, state[-1].split())
+    energy = 0.5 * m1 * m2 / (m1 + m2) * velocity ** 2
+    stuck = pe != 0.0
+    return dict(cor=0.0 if stuck else (vx2 - vx1) / velocity, closure=(total - energy) / energy, stuck=stuck,
+                ref=ref, output=output)

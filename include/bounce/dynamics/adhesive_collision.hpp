@@ -26,7 +26,7 @@ struct AdhesiveCollisionOptions {
   double follow_time = 0.0;
   /// The contact counts as broken at beta = (1 - break_margin) / k: the crack
   /// speed diverges at 1/k, and the rest of the run-away is instantaneous.
-  double break_margin = 1e-6;
+  double break_margin = models::krijt_break_margin;
   StiffEngine engine = StiffEngine::rodas;  ///< krijt only (jkr-viscoelastic is not stiff)
   AdhesiveRelease release = AdhesiveRelease::fold;  ///< jkr-viscoelastic only
 };

@@ -40,10 +40,54 @@ class ContactLaw {
   }
 };
 
-/// A model as a DEM contact law for one pair of materials (models::make_contact_law).
+/// What a contact whose radius is a variable of its own (CrackContactLaw) carries from step to
+/// step.
+struct CrackState {
+  double contact_radius = 0.0;   ///< a [m]
+  double previous_radius = 0.0;  ///< a one step before [m]: for a second-order update
+  double previous_step = 0.0;    ///< that step's length [s] (0: none)
+};
+
+/// What a step did to such a contact.
+struct CrackAdvance {
+  double dissipated = 0.0;  ///< energy the crack's motion released [J] (>= 0)
+  bool broken = false;      ///< the contact ended inside the step
+};
+
+/// A contact law whose contact radius a is independent of the overlap and moves by a crack law
+/// (K13's): its force depends on (a, xi, xi'), and a DEM keeps a per contact between steps.
+class CrackContactLaw {
+ public:
+  virtual ~CrackContactLaw() = default;
+  /// The state where the contact forms, at overlap 0; `dissipated` the energy the formation
+  /// released (K13 appendix B).
+  virtual CrackState form(const ContactGeometry& g, double& dissipated) const = 0;
+  /// Moves the contact radius over a step dt, in which the overlap went from `before` to
+  /// `overlap`, to the step's end; stable for any dt, and of second order in dt along steps of
+  /// about one length. The energy it released is that of the
+  /// change of a at fixed overlap, averaged over the step's two overlaps, so that the rest of
+  /// the change of the contact's energy is the trapezoidal work of its elastic force (the energy
+  /// budget of a DEM closes to second order in dt).
+  virtual CrackAdvance advance(const ContactGeometry& g, double before, double overlap, double dt,
+                               CrackState& s) const = 0;
+  /// The elastic force [N] (positive: repulsive) and the bulk force's coefficient D [kg/s]:
+  /// the total force is elastic + D xi'.
+  virtual double elastic_force(const ContactGeometry& g, double overlap, const CrackState& s) const = 0;
+  virtual double damping(const ContactGeometry& g, const CrackState& s) const = 0;
+  /// The elastic and the surface energy of the contact [J] (each 0 where a = 0).
+  virtual double elastic_energy(const ContactGeometry& g, double overlap, const CrackState& s) const = 0;
+  virtual double surface_energy(const ContactGeometry& g, const CrackState& s) const = 0;
+  /// An overlap (< 0) below which no contact holds, whatever its radius: how far a DEM's
+  /// neighbour search must reach beyond touching.
+  virtual double release_overlap(const ContactGeometry& g) const = 0;
+};
+
+/// A model as a DEM contact law for one pair of materials (models::make_contact_law): its
+/// normal law is `normal`, or `crack` for a law with a contact radius of its own (krijt).
 struct DemModel {
   std::string name;                            ///< the registry keyword
   std::shared_ptr<const ContactLaw> normal;
+  std::shared_ptr<const CrackContactLaw> crack;
   EndRule end_rule = EndRule::overlap;         ///< force: the force is never attractive
   std::optional<TangentialModel> tangential;   ///< with a friction coefficient
 };

@@ -54,17 +54,27 @@ double krijt_hysteresis_estimate(const KrijtParameters& p, double speed);
 /// the measured difference there is below the full model's integration error (~1e-8).
 constexpr double krijt_reduction_threshold = 1e-11;
 
+/// K13's end: the crack runs away (a' -> -inf) as beta -> 1/k; the contact counts as broken at
+/// beta = (1 - krijt_break_margin) / k (the collision engine's default, and the DEM law's).
+constexpr double krijt_break_margin = 1e-6;
+
 /// K13's crack law (14)-(17) over one step dt of a DEM code, with the overlap at the step's end:
 /// backward Euler in a, a - a_old = dt c f(beta(a, delta)), c of (16), taking the root connected
 /// to a_old (above it where the contact grows; where it shrinks, the first one below it). It is
 /// stable for any c dt: as c dt -> inf, f(beta) -> 0 and a goes to the JKR equilibrium (the
-/// fast-crack limit). `broken`: beta reaches (1 - 1e-6)/k before a root, the crack runs away
+/// fast-crack limit). `broken`: beta reaches (1 - krijt_break_margin)/k before a root, the crack runs away
 /// inside the step and the contact ends (K13's end, as dynamics::integrate_krijt_collision's).
 struct CrackStep {
   double contact_radius = 0.0;
   bool broken = false;
 };
 CrackStep krijt_crack_step(const KrijtParameters& p, double contact_radius, double overlap, double dt);
+/// The same by BDF2, of second order and as stable (L-stable), from the radii a_old and
+/// a_older at the ends of the last two steps, `ratio` = dt / (the step before), <= 2 (BDF2 with
+/// variable steps is zero-stable below 1 + sqrt 2): with w = ratio,
+///   a - ((1 + w)^2 a_old - w^2 a_older) / (1 + 2w) = ((1 + w) / (1 + 2w)) dt c f(beta(a, delta)).
+CrackStep krijt_crack_step(const KrijtParameters& p, double contact_radius, double overlap, double dt,
+                           double older_radius, double ratio);
 
 struct InitialContact {
   double contact_radius = 0.0;
@@ -72,5 +82,10 @@ struct InitialContact {
   double crack_dissipated = 0.0;
 };
 InitialContact krijt_initial_contact(const KrijtParameters& p);
+
+/// The overlap (< 0) beyond which beta > (1 - krijt_break_margin)/k for every contact radius:
+/// no neck holds there. With d = -delta R, beta is least at a^2 = d/3, where
+/// beta = (16 sqrt(3) / 9) E* d^{3/2} / (2 pi R^2 gamma) (K13 (14)).
+double krijt_release_overlap(const KrijtParameters& p);
 
 }  // namespace bounce::models

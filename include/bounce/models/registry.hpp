@@ -31,6 +31,8 @@ namespace bounce::models {
 using ModelFactory = std::function<Model(const Pair& pair, const Parameters& parameters)>;
 /// Makes the model's normal law as a DEM contact law (contact_law.hpp) for a pair of materials.
 using ContactLawFactory = std::function<std::shared_ptr<const ContactLaw>(const Pair& pair, const Parameters& parameters)>;
+using CrackLawFactory =
+    std::function<std::shared_ptr<const CrackContactLaw>(const Pair& pair, const Parameters& parameters)>;
 
 struct ModelRow {
   std::string name;        ///< the keyword (`--model NAME`, `bounce.Model(NAME)`)
@@ -44,6 +46,9 @@ struct ModelRow {
   std::vector<std::string> fit = {};
   /// The model as a DEM contact law (LAMMPS's pair_style bounce); empty: not available.
   ContactLawFactory contact_law = {};
+  /// Or as one with a contact radius of its own (krijt).
+  CrackLawFactory crack_law = {};
+  bool dem() const { return contact_law || crack_law; }
 };
 
 class ModelRegistry {

@@ -193,10 +193,27 @@ TEST(ContactLaw, PairCoeffInputsAreCheckedByTheClisRules) {
   EXPECT_NE(refusal(base({{"contact_end", std::string("pull-off")}})).find("overlap or force"), std::string::npos);
   EXPECT_NE(refusal(base({{"k", std::string("0.1")}})).find("krijt"), std::string::npos);  // the model that takes it
   EXPECT_NE(refusal(base({{"bogus", std::string("1")}})).find("bogus"), std::string::npos);
-  EXPECT_NE(refusal({{"model", std::string("krijt")}, {"material", std::string("water-ice")},
-                     {"tvis", std::string("1e-11")}})
-                .find("DEM contact law"),
+  // krijt: a crack law with its own contact radius, between atoms only.
+  const api::Inputs krijt{{"model", std::string("krijt")}, {"material", std::string("water-ice")},
+                          {"tvis", std::string("1e-11")}};
+  const models::DemModel k13 = api::contact_law(krijt);
+  EXPECT_TRUE(k13.crack && !k13.normal);
+  EXPECT_NE(refusal({{"model", std::string("krijt")}, {"material", std::string("water-ice")}}).find("tvis"),
             std::string::npos);
+  EXPECT_NE(refusal({{"model", std::string("krijt")}, {"material", std::string("water-ice")},
+                     {"tvis", std::string("1e-11")}, {"k", std::string("1.5")}})
+                .find("k = 1.5 is invalid"),
+            std::string::npos);
+  EXPECT_NE(refusal({{"model", std::string("krijt")}, {"material", std::string("water-ice")},
+                     {"tvis", std::string("1e-11")}, {"z0", std::string("-2e-10")}})
+                .find("z0 = -2e-10 is invalid"),
+            std::string::npos);
+  try {
+    api::wall_contact_law(krijt);
+    ADD_FAILURE() << "krijt against a wall was accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("krijt acts between atoms only"), std::string::npos) << e.what();
+  }
   EXPECT_NE(refusal({{"model", std::string("nonsense")}, {"material", std::string("water-ice")}}).find("nonsense"),
             std::string::npos);
   EXPECT_NE(refusal({{"model", std::string("jkr-viscoelastic")}, {"material", std::string("ice-bshp96")},
