@@ -88,23 +88,24 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
     return out;
   }
   const double before = k.overlap + s.dt * k.vn;  // the overlap at the step before
-  const double m = g.effective_mass;
+  const double m = g.effective_mass, half_step_over_m = 0.5 * s.dt / m;
   // The rate at t_n of a force F_E + D xi' (the trapezoidal rule), or LAMMPS's half-step one.
   auto rate = [&](double elastic, double damping) {
-    return s.corrected ? (-k.vn - 0.5 * s.dt * elastic / m) / (1.0 + 0.5 * s.dt * damping / m) : -k.vn;
+    return s.corrected ? (-k.vn - half_step_over_m * elastic) / (1.0 + half_step_over_m * damping) : -k.vn;
   };
   // The bulk force's power D xi'^2 at overlap xi.
   auto bulk_at = [&](double xi, const models::CrackState& state) {
-    const double elastic = crack.elastic_force(g, xi, state), damping = crack.damping(g, state);
+    const auto [elastic, damping] = crack.force(g, xi, state);
     const double r = rate(elastic, damping);
     return damping * r * r;
   };
   auto force_at = [&](double xi, const models::CrackState& state) {
-    const double elastic = crack.elastic_force(g, xi, state), damping = crack.damping(g, state);
+    const auto [elastic, damping] = crack.force(g, xi, state);
     return elastic + damping * rate(elastic, damping);
   };
 
-  models::CrackState state{history[crack_state], history[crack_state + 1], history[crack_state + 2]};
+  models::CrackState state{history[crack_state], history[crack_state + 1], history[crack_state + 2],
+                           history[crack_state + 3]};
   double formation_impulse = 0.0;  // over the part of the step since the contact formed, / dt
   double lent = 0.0;                // see below
   double formation_bulk = 0.0;      // the bulk force's work since the contact formed
@@ -113,8 +114,8 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
   double phi = 1.0;  // the part of the step the contact lasted
   if (!touching) {
     // It formed phi dt before now (K13 appendix B), at overlap 0, and its crack is fastest
-    // there. Its radius moves through stretches of that time that double from 2^-20 of it to
-    // 1/32, then stretches of 1/32 (BDF2's second order needs a uniform step): 46 crack steps,
+    // there. Its radius moves through stretches of that time that double from 2^-12 of it to
+    // 1/16, then stretches of 1/16 (BDF2's second order needs a uniform step): 23 crack steps,
     // once per contact. One step of backward Euler would leave a 15 % short of the crack law's
     // at t_H/100 (micrometre ice, T_vis = 1e-12 s), doubling stretches to the end 3 % short.
     // The energy the crack releases is counted where it moves, and the impulse of the step is
@@ -125,10 +126,10 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
     if (s.corrected && before < 0.0) phi = k.overlap / (k.overlap - before);
     models::CrackState previous_state = state;
     double from = 0.0;
-    for (int j = -20; from < 1.0 && !advance.broken; j++) {
-      const double to = j <= -5 ? std::ldexp(1.0, j) : from + 1.0 / 32.0;
+    for (int j = -12; from < 1.0 && !advance.broken; j++) {
+      const double to = j <= -4 ? std::ldexp(1.0, j) : from + 1.0 / 16.0;
       const models::CrackAdvance a =
-          crack.advance(g, from * k.overlap, to * k.overlap, (to - from) * phi * s.dt, state);
+          crack.advance(g, from * k.overlap, to * k.overlap, (to - from) * phi * s.dt, state, false);
       released += a.dissipated;
       advance.broken = a.broken;
       if (s.corrected) {
@@ -156,7 +157,8 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
       // it badly), and in the stretch where it breaks the break is found by bisection. The
       // impulse up to there is the trapezoidal rule's on the stretches, less the F_{n-1} dt/2
       // the last step already gave; all the energy of the contact at the break is the crack's.
-      models::CrackState now{history[crack_state], history[crack_state + 1], history[crack_state + 2]};
+      models::CrackState now{history[crack_state], history[crack_state + 1], history[crack_state + 2],
+                             history[crack_state + 3]};
       const double f_last = history[last_force];
       auto overlap_at = [&](double theta) { return before + theta * (k.overlap - before); };
       double impulse = 0.0, released = 0.0, theta = 0.0, f_from = f_last, theta_end = 1.0;
@@ -164,16 +166,17 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
       while (theta < 1.0) {
         models::CrackState next = now;
         const models::CrackAdvance a = crack.advance(g, overlap_at(theta), overlap_at(theta + stretch),
-                                                     stretch * s.dt, next);
+                                                     stretch * s.dt, next, false);
         if (a.broken) {
           double lo = 0.0, hi = stretch;
-          for (int i = 0; i < 30; i++) {
+          for (int i = 0; i < 12; i++) {  // to 2^-16 of the step
             const double mid = 0.5 * (lo + hi);
             models::CrackState probe = now;
-            (crack.advance(g, overlap_at(theta), overlap_at(theta + mid), mid * s.dt, probe).broken ? hi : lo) = mid;
+            (crack.advance(g, overlap_at(theta), overlap_at(theta + mid), mid * s.dt, probe, false).broken ? hi : lo) =
+                mid;
           }
           next = now;
-          released += crack.advance(g, overlap_at(theta), overlap_at(theta + lo), lo * s.dt, next).dissipated;
+          released += crack.advance(g, overlap_at(theta), overlap_at(theta + lo), lo * s.dt, next, false).dissipated;
           const double f_to = force_at(overlap_at(theta + lo), next);
           impulse += 0.5 * lo * (f_from + f_to);
           released += crack.elastic_energy(g, overlap_at(theta + lo), next) + crack.surface_energy(g, next);
@@ -199,7 +202,7 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
   }
 
   if (s.update_history) touch = 1;  // (in LAMMPS's setup a new contact forms at the first step)
-  const double elastic = crack.elastic_force(g, k.overlap, state), damping = crack.damping(g, state);
+  const auto [elastic, damping] = crack.force(g, k.overlap, state);
   const double xi_rate = rate(elastic, damping);
   const double fn = elastic + damping * xi_rate;
   const double previous = history[last_force];
@@ -207,6 +210,7 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
     history[crack_state] = state.contact_radius;
     history[crack_state + 1] = state.previous_radius;
     history[crack_state + 2] = state.previous_step;
+    history[crack_state + 3] = state.older_radius;
     history[last_force] = fn;
     // The bulk force's work as velocity Verlet does it: from t_{n-1} to t_n the kinetic energy
     // at whole steps changes by exactly (dt/4)(F_{n-1} + F_n)(xi'_{n-1} + xi'_n), so that this
@@ -218,8 +222,10 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
     history[last_bulk_force] = bulk;
     history[last_rate] = xi_rate;
   }
-  out.elastic = crack.elastic_energy(g, k.overlap, state);
-  out.surface = crack.surface_energy(g, state);
+  if (s.energy) {
+    out.elastic = crack.elastic_energy(g, k.overlap, state);
+    out.surface = crack.surface_energy(g, state);
+  }
   if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(m * k.overlap / fn) / s.dt;
   tangential(law, g, k, s, fn, touching ? previous : fn, history, out);
   out.normal = fn;

@@ -9,14 +9,14 @@
 namespace bounce::lammps {
 
 // Per contact: the tangential spring (models::tangential_step), the last normal force; for a
-// crack law (krijt), its state (models::CrackState, 3 values), the force its forming step lent,
+// crack law (krijt), its state (models::CrackState, 4 values), the force its forming step lent,
 // and the last bulk force and overlap rate (for the energy it dissipates).
-constexpr int history_size = 10;
+constexpr int history_size = 11;
 constexpr int last_force = 3;
 constexpr int crack_state = 4;
-constexpr int lent_force = 7;
-constexpr int last_bulk_force = 8;
-constexpr int last_rate = 9;
+constexpr int lent_force = 8;
+constexpr int last_bulk_force = 9;
+constexpr int last_rate = 10;
 /// A contact whose elastic period pi sqrt(m_eff xi / F) is shorter than this many steps is
 /// reported (docs/lammps.md, Time step).
 constexpr double few_steps = 10.0;
@@ -34,6 +34,7 @@ struct StepSettings {
   double dt;
   bool update_history;  ///< false in LAMMPS's setup
   bool corrected;       ///< integration corrected (and not in setup)
+  bool energy = true;   ///< the stored energies are wanted (LAMMPS's eflag)
 };
 
 struct ContactForce {

@@ -151,6 +151,11 @@ void PairBounce::coeff(int narg, char **arg)
     error->all(FLERR, "pair_coeff {} {} {}: {}", arg[0], arg[1], arg[2], e.what());
   }
 
+  // An adhesive contact holds beyond touching: its history must survive a neighbour-list build
+  // that finds the pair apart (FixNeighHistory keeps it then only with beyond_contact).
+  const bounce::models::ContactGeometry unit{1.0, 1.0};
+  if (entry->law.crack || entry->law.normal->release_overlap(unit) < 0.0) beyond_contact = 1;
+
   const int n = atom->ntypes;
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
@@ -262,6 +267,7 @@ void PairBounce::compute(int eflag, int vflag)
   settings.dt = update->dt;
   settings.update_history = !update->setupflag;
   settings.corrected = corrected_ && settings.update_history;  // setup: whole-step velocities
+  settings.energy = eflag != 0;
   double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *type = atom->type;
@@ -280,10 +286,9 @@ void PairBounce::compute(int eflag, int vflag)
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
       double *history = &all_history[history_size * jj];
-      if (!touch[jj] && rsq >= radsum * radsum) {  // no contact, none before
-        for (int k = 0; k < history_size; k++) history[k] = 0.0;
-        continue;
-      }
+      // No contact, none before: its history is zero already (FixNeighHistory zeroes a new pair's,
+      // and contact_step an ended contact's), and is left alone (11 values for each neighbour).
+      if (!touch[jj] && rsq >= radsum * radsum) continue;
       const bounce::models::DemModel &law = *this->law(type[i], type[j]);
       bounce::models::ContactGeometry g;
       g.effective_radius = radius[i] * radius[j] / radsum;

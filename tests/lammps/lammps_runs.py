@@ -272,12 +272,13 @@ print "STATE $(vx[1]:%.17g) $(vz[1]:%.17g) $(v_w:%.17g)"
     return eps_n, eps_t, ref
 
 
-def krijt_collision(pair, model, velocity, steps_per_hertz_time=100, span=8.0, integration="corrected"):
+def krijt_collision(pair, model, velocity, steps_per_hertz_time=100, span=8.0, integration="corrected", extra=""):
     """A head-on collision of two spheres touching at t = 0 in LAMMPS with pair_style bounce's
-    krijt (or another model), dt = t_H / steps_per_hertz_time with K13's Hertz time (22) at this
-    speed, run for `span` t_H. Returns a dict: cor (0 where the grains stick: their contact
-    still holds, pe != 0), closure (ke + pe + crack- and bulk-dissipated energy at the end,
-    less the impact energy, over it: compute pair bounce), stuck, and bounce's record `ref`."""
+    krijt, dt = t_H / steps_per_hertz_time with K13's Hertz time (22) at this speed, run for
+    `span` t_H (`extra`: script lines before the run). Returns a dict: cor (0 where the grains
+    stick: their contact still holds, pe != 0, or they approach again), closure (ke + pe + crack- and bulk-dissipated
+    energy at the end, less the impact energy, over it: compute pair bounce), stuck, and
+    bounce's record `ref`. (Other models have no pe: for them only cor is meaningful.)"""
     ref = bounce(*cli_args(dict(pair, **model)), "--velocity", str(velocity))
     t_hertz = ref["closed_forms"]["hertz_time_k13_22"] if "closed_forms" in ref else ref["contact_time"]
     b1, b2 = ref["pair"]["body1"], ref["pair"]["body2"]
@@ -304,6 +305,7 @@ compute e all pair bounce
 variable total equal ke+pe+c_e[1]+c_e[2]
 thermo_style custom step ke pe c_e[1] c_e[2] v_total
 thermo {steps}
+{extra}
 run {steps}
 print "STATE $(vx[1]:%.17g) $(vx[2]:%.17g) $(pe:%.17g) $(v_total:%.17g)"
 """
@@ -313,6 +315,8 @@ print "STATE $(vx[1]:%.17g) $(vx[2]:%.17g) $(pe:%.17g) $(v_total:%.17g)"
         raise RuntimeError(f"no final state in:\n{output[-3000:]}")
     vx1, vx2, pe, total = map(float, state[-1].split())
     energy = 0.5 * m1 * m2 / (m1 + m2) * velocity ** 2
-    stuck = pe != 0.0
+    # Stuck: the contact holds, or the neck broke while it pulled the grains back together, so
+    # that they meet again (as bounce collide has it, K13's sticking).
+    stuck = pe != 0.0 or vx2 - vx1 <= 0.0
     return dict(cor=0.0 if stuck else (vx2 - vx1) / velocity, closure=(total - energy) / energy, stuck=stuck,
                 ref=ref, output=output)

@@ -98,8 +98,30 @@ def export_table():
               f" | {2 * errors[2] - errors[1]:.1e} |")
 
 
+def krijt_table():
+    """krijt (1 um water ice) over T_vis, z0 and speeds in units of the sticking velocity: the COR's
+    error and the energy budget's closure at t_H/100 and t_H/400 (K13's Hertz time (22))."""
+    ice = dict(material="water-ice", radius=1e-6)
+    print("| T_vis [s] | z0 [nm] | v_s [m/s] | v / v_s | COR (bounce) | COR error t_H/100 | t_H/400 | order | "
+          "closure t_H/100 | t_H/400 |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for tvis in (1e-14, 1e-13, 1e-12, 1e-11):
+        for z0 in (1e-10, 2e-10, 3e-10):
+            model = dict(model="krijt", tvis=tvis, z0=z0)
+            out = subprocess.run([L.CLI, "sticking", *L.cli_args(dict(ice, **model)), "--json"], capture_output=True,
+                                 text=True, check=True)
+            v_s = json.loads(out.stdout)["sticking_velocity"]
+            for factor in (0.5, 1.5, 3.0, 5.0):
+                runs = [L.krijt_collision(ice, model, factor * v_s, n) for n in (100, 400)]
+                ref = runs[0]["ref"]["cor"]
+                errors = [r["cor"] - ref for r in runs]
+                order = f"{math.log(abs(errors[0] / errors[1])) / math.log(4.0):.1f}" if errors[1] else "-"
+                print(f"| {tvis:g} | {z0 * 1e9:g} | {v_s:.3f} | {factor:g} | {ref:.5f} | {errors[0]:+.1e} | "
+                      f"{errors[1]:+.1e} | {order} | {runs[0]['closure']:+.1e} | {runs[1]['closure']:+.1e} |")
+
+
 if __name__ == "__main__":
     for title, table in (("head-on force laws", head_on_table), ("jkr-viscoelastic", jkr_table),
-                         ("oblique", oblique_table), ("bounce lammps export", export_table)):
+                         ("oblique", oblique_table), ("bounce lammps export", export_table), ("krijt", krijt_table)):
         print(f"\n### {title}\n")
         table()

@@ -3,7 +3,7 @@
 
 Micrometre water-ice grains (K13 table 2), dt = t_H/100 with K13's Hertz time (22) at the
 impact speed. The reference is bounce's stiff engine (its COR error is below 1e-8). The bounds
-are the issue's: COR within 1e-2 (measured <= 1e-3 over the whole grid, docs/lammps.md),
+are the issue's: COR within 1e-2 (measured <= 1.2e-3 over the whole grid, docs/lammps.md),
 the sticking velocity within 2 %, the energy budget of compute pair bounce; each test also
 checks that the error falls with dt."""
 import json
@@ -26,7 +26,7 @@ def sticking_velocity(model):
 @pytest.mark.parametrize("tvis", [1e-14, 1e-12, 1e-11])
 @pytest.mark.parametrize("z0", [1e-10, 3e-10])
 def test_cor_against_bounce(tvis, z0):
-    """At 1.5 and 5 times the sticking velocity: within 1e-2 at t_H/100 (measured <= 1e-3),
+    """At 1.5 and 5 times the sticking velocity: within 1e-2 at t_H/100 (measured <= 1.2e-3),
     and at t_H/400 within half of that error (the order is 1-2, docs/lammps.md) or 3e-5. At half
     the sticking velocity both stick."""
     model = dict(model="krijt", tvis=tvis, z0=z0)
@@ -46,7 +46,7 @@ def test_cor_against_bounce(tvis, z0):
 @pytest.mark.parametrize("tvis", [1e-14, 1e-12, 1e-11])
 def test_sticking_velocity(tvis):
     """The speed that divides sticking from bouncing in LAMMPS at t_H/100, by bisection to 0.5 %,
-    within 2 % of `bounce sticking` (measured within 0.3 %, docs/lammps.md)."""
+    within 2 % of `bounce sticking` (measured within 0.06 %, the bisection's step, docs/lammps.md)."""
     model = dict(model="krijt", tvis=tvis)
     reference = sticking_velocity(model)
     low, high = 0.7 * reference, 1.3 * reference
@@ -63,7 +63,7 @@ def test_sticking_velocity(tvis):
 
 def test_one_time_step_for_every_relaxation_time():
     """One dt (t_H/100 at 3 m/s) for T_vis from 1e-14 to 1e-8 s: the crack's rate constant
-    varies by 1e6 against it and the bulk force's D dt / m_eff reaches ~30, yet every run ends
+    varies by 1e6 against it and the bulk force's D dt / m_eff reaches ~3000, yet every run ends
     with finite energies that close, and sticks or bounces as bounce does."""
     dt_speed = 3.0
     t_hertz = L.bounce(*L.cli_args(dict(ICE, model="krijt", tvis=1e-12)), "--velocity", str(dt_speed))[
@@ -125,3 +125,17 @@ def test_fast_crack_is_elastic_jkr():
     e_jkr = coarse["ref"]["closed_forms"]["e_jkr"]
     assert abs(coarse["cor"] - e_jkr) <= 1e-3, (coarse["cor"], e_jkr)
     assert abs(fine["cor"] - e_jkr) < abs(coarse["cor"] - e_jkr)
+
+
+@pytest.mark.parametrize("model,factor", [(dict(model="krijt", tvis=1e-12), 1.5),
+                                          (dict(model="krijt", tvis=1e-12), 0.5),
+                                          (dict(model="jkr-viscoelastic", tvis=1e-11, contact_end="pull-off"), 1.1)])
+def test_neck_survives_neighbor_list_builds(model, factor):
+    """An adhesive contact held beyond touching keeps its history through neighbour-list builds
+    (pair->beyond_contact): rebuilding the list at every step changes nothing, to round-off."""
+    speed = factor * sticking_velocity(model)
+    plain = L.krijt_collision(ICE, model, speed)
+    rebuilt = L.krijt_collision(ICE, model, speed, extra="neigh_modify every 1 delay 0 check no")
+    assert plain["stuck"] == rebuilt["stuck"]
+    assert abs(plain["cor"] - rebuilt["cor"]) <= 1e-12, (plain["cor"], rebuilt["cor"])
+    assert abs(plain["closure"] - rebuilt["closure"]) <= 1e-12

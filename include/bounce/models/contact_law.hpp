@@ -46,6 +46,7 @@ struct CrackState {
   double contact_radius = 0.0;   ///< a [m]
   double previous_radius = 0.0;  ///< a one step before [m]: for a second-order update
   double previous_step = 0.0;    ///< that step's length [s] (0: none)
+  double older_radius = 0.0;     ///< a two steps before, if that step was as long [m] (0: none)
 };
 
 /// What a step did to such a contact.
@@ -68,12 +69,17 @@ class CrackContactLaw {
   /// change of a at fixed overlap, averaged over the step's two overlaps, so that the rest of
   /// the change of the contact's energy is the trapezoidal work of its elastic force (the energy
   /// budget of a DEM closes to second order in dt).
-  virtual CrackAdvance advance(const ContactGeometry& g, double before, double overlap, double dt,
-                               CrackState& s) const = 0;
+  /// `refine`: a step in which the crack moves fast may be taken as several (false where the
+  /// caller already divides the step).
+  virtual CrackAdvance advance(const ContactGeometry& g, double before, double overlap, double dt, CrackState& s,
+                               bool refine = true) const = 0;
   /// The elastic force [N] (positive: repulsive) and the bulk force's coefficient D [kg/s]:
   /// the total force is elastic + D xi'.
-  virtual double elastic_force(const ContactGeometry& g, double overlap, const CrackState& s) const = 0;
-  virtual double damping(const ContactGeometry& g, const CrackState& s) const = 0;
+  struct Force {
+    double elastic = 0.0;
+    double damping = 0.0;
+  };
+  virtual Force force(const ContactGeometry& g, double overlap, const CrackState& s) const = 0;
   /// The elastic and the surface energy of the contact [J] (each 0 where a = 0).
   virtual double elastic_energy(const ContactGeometry& g, double overlap, const CrackState& s) const = 0;
   virtual double surface_energy(const ContactGeometry& g, const CrackState& s) const = 0;

@@ -73,8 +73,9 @@ CrackStep krijt_crack_step(const KrijtParameters& p, double contact_radius, doub
 /// a_older at the ends of the last two steps, `ratio` = dt / (the step before), <= 2 (BDF2 with
 /// variable steps is zero-stable below 1 + sqrt 2): with w = ratio,
 ///   a - ((1 + w)^2 a_old - w^2 a_older) / (1 + 2w) = ((1 + w) / (1 + 2w)) dt c f(beta(a, delta)).
+/// `guess` (> 0): where Newton's iteration starts (default: a_old + ratio (a_old - a_older)).
 CrackStep krijt_crack_step(const KrijtParameters& p, double contact_radius, double overlap, double dt,
-                           double older_radius, double ratio);
+                           double older_radius, double ratio, double guess = 0.0);
 
 struct InitialContact {
   double contact_radius = 0.0;
@@ -82,6 +83,8 @@ struct InitialContact {
   double crack_dissipated = 0.0;
 };
 InitialContact krijt_initial_contact(const KrijtParameters& p);
+/// Its contact radius alone, a0 of (B.1) at beta = 1.01 k (without the quadrature of the time).
+double krijt_formation_radius(const KrijtParameters& p);
 
 /// The overlap (< 0) beyond which beta > (1 - krijt_break_margin)/k for every contact radius:
 /// no neck holds there. With d = -delta R, beta is least at a^2 = d/3, where
