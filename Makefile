@@ -14,8 +14,10 @@
 #                    cached in ~/.cache/bounce, and build/lammps/bounceplugin.so against it;
 #                    build/lammps/lmp runs it, and `make test` then runs the LAMMPS tests
 #                    (docs/lammps.md)
-#   make lammps-demo opt-in: the homogeneous cooling state of two granular gases in LAMMPS on
-#                    2 MPI ranks (~7 min), out/figures/hcs-cooling and out/hcs/results.json
+#   make lammps-demo opt-in, on 2 MPI ranks: the homogeneous cooling state of two granular gases
+#                    (~7 min; out/figures/hcs-cooling, out/hcs/results.json) and the aggregation of
+#                    sticky ice grains with K13's law against elastic JKR (~2 min;
+#                    out/figures/aggregation, out/aggregation/results.json)
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
@@ -86,6 +88,7 @@ lammps: deps
 
 lammps-demo: lammps
 	$(PYTHON) tools/hcs.py --build $(BUILD_DIR) --out out
+	$(PYTHON) tools/aggregation.py --build $(BUILD_DIR) --out out
 
 demo: deps
 	@$(MAKE) --no-print-directory build

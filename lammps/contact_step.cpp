@@ -49,9 +49,9 @@ void turn_spring(const double n[3], double* h) {
     for (int k = 0; k < 3; k++) h[k] *= before / after;
 }
 
-void clear(int& touch, double* history) {
+void clear(int& touch, double* history, int size = history_size) {
   touch = 0;
-  for (int k = 0; k < history_size; k++) history[k] = 0.0;
+  for (int k = 0; k < size; k++) history[k] = 0.0;
 }
 
 // The tangential force, of the normal force fn (previous: the last step's).
@@ -84,7 +84,7 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
   ContactForce out;
   const bool touching = touch != 0;
   if (!touching && k.overlap <= 0.0) {
-    clear(touch, history);
+    clear(touch, history, crack_history_size);
     return out;
   }
   const double before = k.overlap + s.dt * k.vn;  // the overlap at the step before
@@ -197,7 +197,7 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
       out.bulk_dissipated = 0.5 * theta_end * s.dt * history[last_bulk_force] * history[last_rate];
       out.crack_dissipated = released;
     }
-    clear(touch, history);
+    clear(touch, history, crack_history_size);
     return out;
   }
 

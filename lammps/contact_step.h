@@ -9,9 +9,11 @@
 namespace bounce::lammps {
 
 // Per contact: the tangential spring (models::tangential_step), the last normal force; for a
-// crack law (krijt), its state (models::CrackState, 4 values), the force its forming step lent,
-// and the last bulk force and overlap rate (for the energy it dissipates).
-constexpr int history_size = 11;
+// crack law (krijt), then its state (models::CrackState, 4 values), the force its forming step
+// lent, and the last bulk force and overlap rate (for the energy it dissipates). A pair style
+// whose laws have no crack keeps the first history_size values only.
+constexpr int history_size = 4;
+constexpr int crack_history_size = 11;
 constexpr int last_force = 3;
 constexpr int crack_state = 4;
 constexpr int lent_force = 8;

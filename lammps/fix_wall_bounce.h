@@ -42,7 +42,7 @@ class FixWallBounce : public Fix {
   int unpack_exchange(int, double *) override;
 
  private:
-  static constexpr int values = 1 + bounce::lammps::history_size;  // per atom and wall: the touch flag, the history
+  static constexpr int values = 1 + bounce::lammps::history_size;  // per atom and wall: the touch flag, the history (no crack laws at walls)
   static constexpr int size_ = 2 * values;  // per atom: two walls
   int axis_;
   bool has_[2];

@@ -34,7 +34,6 @@
 
 using namespace LAMMPS_NS;
 
-using bounce::lammps::history_size;
 
 namespace {
 const char *const dummy_id = "NEIGH_HISTORY_BOUNCE_DUMMY";
@@ -113,7 +112,7 @@ void PairBounce::settings(int narg, char **arg)
 void PairBounce::transfer_history(double *source, double *target)
 {
   for (int k = 0; k < bounce::lammps::last_force; k++) target[k] = -source[k];
-  for (int k = bounce::lammps::last_force; k < history_size; k++) target[k] = source[k];
+  for (int k = bounce::lammps::last_force; k < history_values_; k++) target[k] = source[k];
 }
 
 // pair_coeff I J MODEL key value ...: the CLI's names without dashes (docs/lammps.md).
@@ -197,9 +196,18 @@ void PairBounce::init_style()
   neighbor->requests[irequest]->history = 1;
 #endif
   if (fix_history_ == nullptr) {
+    // A crack law's contacts keep its state too (the fix's size is set once, at the first run).
+    history_values_ = bounce::lammps::history_size;
+    for (const auto &entry : laws_)
+      if (entry && entry->law.crack) history_values_ = bounce::lammps::crack_history_size;
     fix_history_ = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
-        dummy_id, std::string(history_id) + " all NEIGH_HISTORY " + std::to_string(history_size), 1));
+        dummy_id, std::string(history_id) + " all NEIGH_HISTORY " + std::to_string(history_values_), 1));
     fix_history_->pair = this;
+  } else {
+    for (const auto &entry : laws_)
+      if (entry && entry->law.crack && history_values_ < bounce::lammps::crack_history_size)
+        error->all(FLERR, "pair_style bounce: a krijt pair_coeff after the first run keeps no crack state: give it "
+                          "before the first run");
   }
 
   // The largest radius of each type (the cutoffs, and the reach of adhesive contacts).
@@ -285,7 +293,7 @@ void PairBounce::compute(int eflag, int vflag)
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      double *history = &all_history[history_size * jj];
+      double *history = &all_history[history_values_ * jj];
       // No contact, none before: its history is zero already (FixNeighHistory zeroes a new pair's,
       // and contact_step an ended contact's), and is left alone (11 values for each neighbour).
       if (!touch[jj] && rsq >= radsum * radsum) continue;

@@ -58,6 +58,7 @@ class PairBounce : public Pair {
   std::vector<double> max_radius_;  // per type, over all atoms
   bool corrected_ = true;           // pair_style bounce integration corrected | plain
   bool warned_ = false;             // a contact too stiff for dt was reported in this run
+  int history_values_ = 0;          // per contact: history_size, or crack_history_size with krijt
 };
 
 }  // namespace LAMMPS_NS

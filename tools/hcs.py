@@ -31,7 +31,6 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
 import tempfile
 import time
@@ -151,21 +150,17 @@ def run_gas(name, coeff, edges, dt_at, dumps, lmp, plugin, work, cores):
     for a, b in zip(edges, edges[1:]):
         dt = dt_at(a)
         segments.append((dt, max(int(round((b - a) / dt)), 1)))
-    text = script(coeff, segments, dumps, plugin)
-    with open(os.path.join(work, "in.hcs"), "w") as f:
-        f.write(text)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    command = ["mpirun", "-np", str(cores), "--oversubscribe", lmp, "-in", "in.hcs", "-log", "log.lammps"]
-    started = time.time()
-    print(f"hcs: {name}: {sum(s for _, s in segments)} steps on {cores} ranks ...", flush=True)
-    done = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True)
-    if done.returncode != 0:
-        sys.exit(f"hcs: lmp failed:\n{(done.stdout + done.stderr)[-3000:]}")
-    print(f"hcs: {name}: {time.time() - started:.0f} s", flush=True)
+    os.environ["BOUNCE_LMP"] = lmp
     sys.path.insert(0, os.path.join(ROOT, "tests", "lammps"))
     import lammps_runs
-    with open(os.path.join(work, "log.lammps")) as f:
-        rows = {int(step): (t, ke) for step, t, ke in lammps_runs.thermo_rows(f.read())}  # runs repeat a step
+    started = time.time()
+    print(f"hcs: {name}: {sum(s for _, s in segments)} steps on {cores} ranks ...", flush=True)
+    try:
+        log = lammps_runs.run_in(work, script(coeff, segments, dumps, plugin), cores, "in.hcs")
+    except RuntimeError as e:
+        sys.exit(f"hcs: {e}")
+    print(f"hcs: {name}: {time.time() - started:.0f} s", flush=True)
+    rows = {int(step): (t, ke) for step, t, ke in lammps_runs.thermo_rows(log)}  # runs repeat a step
     data = np.array(sorted(rows.values()))
     snaps = {}
     for k in dumps:

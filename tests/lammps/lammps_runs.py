@@ -51,6 +51,29 @@ def run_lammps(script, cores=1, check=True):
     return done.returncode, output
 
 
+def final_state(output):
+    """The numbers of the last line a script printed as `print "STATE ..."`."""
+    state = re.findall(r"^STATE (.*)$", output, re.M)
+    if not state:
+        raise RuntimeError(f"no final state in:\n{output[-3000:]}")
+    return [float(v) for v in state[-1].split()]
+
+
+def run_in(work, script, cores, name="in.run"):
+    """Runs an input script on `cores` MPI ranks in the folder `work` (its files stay there);
+    returns LAMMPS's log (log.lammps), or exits naming the failure."""
+    with open(os.path.join(work, name), "w") as f:
+        f.write(script)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    lmp = os.environ.get("BOUNCE_LMP") or LMP  # a tool may set it after importing this module
+    command = ["mpirun", "-np", str(cores), "--oversubscribe", lmp, "-in", name, "-log", "log.lammps"]
+    done = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"lmp failed:\n{(done.stdout + done.stderr)[-3000:]}")
+    with open(os.path.join(work, "log.lammps")) as f:
+        return f.read()
+
+
 def printed(output, name):
     """The number after `name` in a line LAMMPS printed ("COR 0.5486")."""
     match = re.findall(rf"^{name} (\S+)$", output, re.M)
@@ -119,10 +142,7 @@ run {steps}
 print "STATE $(x[1]:%.17g) $(y[1]:%.17g) $(vx[1]:%.17g) $(vy[1]:%.17g) $(v_w1:%.17g) $(x[2]:%.17g) $(y[2]:%.17g) $(vx[2]:%.17g) $(vy[2]:%.17g) $(v_w2:%.17g)"
 """
     _, output = run_lammps(script)
-    state = re.findall(r"^STATE (.*)$", output, re.M)
-    if not state:
-        raise RuntimeError(f"no final state in:\n{output[-3000:]}")
-    x1, y1, vx1, vy1, w1, x2, y2, vx2, vy2, w2 = map(float, state[-1].split())
+    x1, y1, vx1, vy1, w1, x2, y2, vx2, vy2, w2 = final_state(output)
     # The frame of the contact as it ended: the line of centres at separation (bounce's contact
     # time; after it the centres fly straight), not the x axis: sliding turns it by about
     # g^T t_c / (R1 + R2), which would otherwise mix g^N into g^T (BSHP96's geometry is fixed).
@@ -310,10 +330,7 @@ run {steps}
 print "STATE $(vx[1]:%.17g) $(vx[2]:%.17g) $(pe:%.17g) $(v_total:%.17g)"
 """
     _, output = run_lammps(script)
-    state = re.findall(r"^STATE (.*)$", output, re.M)
-    if not state:
-        raise RuntimeError(f"no final state in:\n{output[-3000:]}")
-    vx1, vx2, pe, total = map(float, state[-1].split())
+    vx1, vx2, pe, total = final_state(output)
     energy = 0.5 * m1 * m2 / (m1 + m2) * velocity ** 2
     # Stuck: the contact holds, or the neck broke while it pulled the grains back together, so
     # that they meet again (as bounce collide has it, K13's sticking).

@@ -224,3 +224,13 @@ def test_export_types():
     out = subprocess.run([L.CLI, "lammps", "--model", "viscoelastic", "--material", "ice-bshp96", "--material2", "quartz",
                           "--radius", "0.01", "--A", "1e-5", "--type2", "1"], capture_output=True, text=True)
     assert out.returncode == 2 and "--type2 = 1 is invalid" in out.stderr, out.stderr
+
+
+def test_krijt_after_the_first_run_is_refused():
+    """The per-contact history's size is fixed at the first run: a krijt pair_coeff given after a
+    run without one would have no room for its crack state, and stops LAMMPS saying so."""
+    script = COLLISION.format(plugin=L.PLUGIN, style="bounce", coeffs="pair_coeff * * hertz material water-ice")
+    script += "pair_coeff * * krijt material water-ice tvis 1e-11\nrun 0\n"
+    code, output = L.run_lammps(script.replace("create_atoms 2 single 0.5 0 0", "create_atoms 2 single 0.5 0 0\nneighbor 0.5 bin"), check=False)
+    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    assert code != 0 and errors and "before the first run" in errors[0], output[-2000:]
