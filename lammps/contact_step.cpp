@@ -76,8 +76,8 @@ void tangential(const models::DemModel& law, const models::ContactGeometry& g, c
    would be unstable once D dt / m_eff > 2 (T_vis >~ 1e-9 s for micrometre ice at t_H/100).
    The contact forms at overlap 0 (K13 appendix B) and ends where the crack runs away, wherever
    the overlap is then. With `corrected`, the step where it forms gets the impulse of the part
-   phi dt it lasted by Simpson's rule, as contact_step's; the step where it breaks that of the
-   part theta dt before the break, theta found by bisection (once per contact). */
+   phi dt it lasted, and the step where it breaks that of the part theta dt before the break,
+   each by the trapezoidal rule on stretches of the step in which the crack moves (below). */
 ContactForce crack_step(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
                         const StepSettings& s, int& touch, double* history) {
   const models::CrackContactLaw& crack = *law.crack;

@@ -62,8 +62,10 @@ constexpr double krijt_break_margin = 1e-6;
 /// backward Euler in a, a - a_old = dt c f(beta(a, delta)), c of (16), taking the root connected
 /// to a_old (above it where the contact grows; where it shrinks, the first one below it). It is
 /// stable for any c dt: as c dt -> inf, f(beta) -> 0 and a goes to the JKR equilibrium (the
-/// fast-crack limit). `broken`: beta reaches (1 - krijt_break_margin)/k before a root, the crack runs away
-/// inside the step and the contact ends (K13's end, as dynamics::integrate_krijt_collision's).
+/// fast-crack limit). `broken`: below a_old no root is met before beta >= (1 - krijt_break_margin)/k
+/// and rising as a falls; the crack runs away inside the step and the contact ends (K13's end, as
+/// dynamics::integrate_krijt_collision's). Where a^2 < delta R (K13 (14) squares the edge's stress
+/// intensity, negative there) the edge closes at the crack law's top speed (docs/decisions.md D22).
 struct CrackStep {
   double contact_radius = 0.0;
   bool broken = false;
