@@ -22,7 +22,6 @@ step is t_H/100 at the mean relative speed (K13's Hertz time (22)).
 
     /usr/bin/python3 tools/aggregation.py [--build build] [--out out] [--quick]
 """
-import argparse
 import json
 import math
 import os
@@ -35,6 +34,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..")
+sys.path.insert(0, os.path.join(ROOT, "tests", "lammps"))
+import lammps_runs  # noqa: E402
 
 RADIUS, DENSITY, PHI, SPEED, CELLS = 1e-6, 1000.0, 0.15, 1.5, 16
 N = CELLS ** 3
@@ -123,24 +124,10 @@ def half_time(times, number):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
-    parser.add_argument("--out", default=os.path.join(ROOT, "out"))
-    parser.add_argument("--cores", type=int, default=2)
-    parser.add_argument("--quick", action="store_true", help="a tenth of the time: a smoke run, not the result")
-    parser.add_argument("--steps", type=int, default=STEPS, help=f"time steps of each run (default {STEPS})")
-    args = parser.parse_args()
-    build = os.path.abspath(args.build)
-    lmp, plugin = os.path.join(build, "lammps", "lmp"), os.path.join(build, "lammps", "bounceplugin.so")
-    cli = os.path.join(build, "bin", "bounce")
-    if not (os.path.exists(lmp) and os.path.exists(plugin)):
-        sys.exit("aggregation: no LAMMPS build: run `make lammps` first")
-    os.environ.update(BOUNCE_LMP=lmp, BOUNCE_PLUGIN=plugin, BOUNCE_CLI=cli)
-    global lammps_runs
-    sys.path.insert(0, os.path.join(ROOT, "tests", "lammps"))
-    import lammps_runs
-    os.makedirs(os.path.join(args.out, "figures"), exist_ok=True)
-    os.makedirs(os.path.join(args.out, "aggregation"), exist_ok=True)
+    args, build = lammps_runs.demo_setup(
+        __doc__.splitlines()[0], ROOT, "aggregation",
+        lambda p: p.add_argument("--steps", type=int, default=STEPS, help=f"time steps of each run (default {STEPS})"))
+    cli = lammps_runs.CLI
     t_hertz, mean_relative = collision_time(cli)
     dt = t_hertz / 100.0
     steps = args.steps // 10 if args.quick else args.steps

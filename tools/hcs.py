@@ -26,11 +26,9 @@ fluctuations over 6^3 cells against their values for uncorrelated grains).
 
     /usr/bin/python3 tools/hcs.py [--build build] [--out out] [--quick]
 """
-import argparse
 import json
 import math
 import os
-import re
 import sys
 import tempfile
 import time
@@ -39,6 +37,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..")
+sys.path.insert(0, os.path.join(ROOT, "tests", "lammps"))
+import lammps_runs  # noqa: E402
 
 RADIUS, DENSITY, PHI, SPEED, CELLS = 1e-3, 1000.0, 0.03, 1.0, 22
 MASS = 4.0 / 3.0 * math.pi * RADIUS ** 3 * DENSITY
@@ -145,14 +145,11 @@ def segments_for(t_end, dt_of_speed, count=24, first=None):
     return edges
 
 
-def run_gas(name, coeff, edges, dt_at, dumps, lmp, plugin, work, cores):
+def run_gas(name, coeff, edges, dt_at, dumps, plugin, work, cores):
     segments = []
     for a, b in zip(edges, edges[1:]):
         dt = dt_at(a)
         segments.append((dt, max(int(round((b - a) / dt)), 1)))
-    os.environ["BOUNCE_LMP"] = lmp
-    sys.path.insert(0, os.path.join(ROOT, "tests", "lammps"))
-    import lammps_runs
     started = time.time()
     print(f"hcs: {name}: {sum(s for _, s in segments)} steps on {cores} ranks ...", flush=True)
     try:
@@ -206,19 +203,9 @@ def fit(times, temperature, lo, hi):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
-    parser.add_argument("--out", default=os.path.join(ROOT, "out"))
-    parser.add_argument("--cores", type=int, default=2)
-    parser.add_argument("--quick", action="store_true", help="a tenth of the time: a smoke run, not the result")
-    args = parser.parse_args()
-    build = os.path.abspath(args.build)
-    lmp, plugin = os.path.join(build, "lammps", "lmp"), os.path.join(build, "lammps", "bounceplugin.so")
-    if not (os.path.exists(lmp) and os.path.exists(plugin)):
-        sys.exit("hcs: no LAMMPS build: run `make lammps` first")
+    args, build = lammps_runs.demo_setup(__doc__.splitlines()[0], ROOT, "hcs")
+    plugin = lammps_runs.PLUGIN
     scale = 0.1 if args.quick else 1.0
-    os.makedirs(os.path.join(args.out, "figures"), exist_ok=True)
-    os.makedirs(os.path.join(args.out, "hcs"), exist_ok=True)
 
     d1, d2, t_c_linear = linear_dashpot()
     tau0 = haff_tau0()
@@ -250,7 +237,7 @@ def main():
         dumps = [k for k, b in enumerate(edges[1:]) if b >= gas["window"][0] * 0.99]
         dumps = [dumps[0], dumps[len(dumps) // 2], dumps[-1]] if dumps else []
         with tempfile.TemporaryDirectory() as work:
-            times, temperature, snaps = run_gas(name, gas["coeff"], edges, gas["dt"], dumps, lmp, plugin, work,
+            times, temperature, snaps = run_gas(name, gas["coeff"], edges, gas["dt"], dumps, plugin, work,
                                                 args.cores)
         alpha, t0, err = fit(times, temperature, *gas["window"])
         checks = {f"{t:.4g}": dict(zip(("density", "flow"), homogeneity(*snap))) for t, snap in snaps.items()}

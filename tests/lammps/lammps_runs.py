@@ -65,13 +65,36 @@ def run_in(work, script, cores, name="in.run"):
     with open(os.path.join(work, name), "w") as f:
         f.write(script)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    lmp = os.environ.get("BOUNCE_LMP") or LMP  # a tool may set it after importing this module
-    command = ["mpirun", "-np", str(cores), "--oversubscribe", lmp, "-in", name, "-log", "log.lammps"]
+    command = ["mpirun", "-np", str(cores), "--oversubscribe", LMP, "-in", name, "-log", "log.lammps"]
     done = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True)
     if done.returncode != 0:
         raise RuntimeError(f"lmp failed:\n{(done.stdout + done.stderr)[-3000:]}")
     with open(os.path.join(work, "log.lammps")) as f:
         return f.read()
+
+
+def demo_setup(description, root, name, extra=lambda parser: None):
+    """The command line of a LAMMPS demonstration (tools/hcs.py, tools/aggregation.py): --build,
+    --out, --cores, --quick (and `extra`'s), the build checked and named in the environment for
+    this module; out/figures and out/NAME made. Returns (args, build folder)."""
+    import argparse
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--build", default=os.path.join(root, "build"))
+    parser.add_argument("--out", default=os.path.join(root, "out"))
+    parser.add_argument("--cores", type=int, default=2)
+    parser.add_argument("--quick", action="store_true", help="a tenth of the time: a smoke run, not the result")
+    extra(parser)
+    args = parser.parse_args()
+    build = os.path.abspath(args.build)
+    lmp, plugin = os.path.join(build, "lammps", "lmp"), os.path.join(build, "lammps", "bounceplugin.so")
+    if not (os.path.exists(lmp) and os.path.exists(plugin)):
+        raise SystemExit(f"{name}: no LAMMPS build: run `make lammps` first")
+    global LMP, PLUGIN, CLI
+    LMP, PLUGIN, CLI = lmp, plugin, os.path.join(build, "bin", "bounce")
+    os.environ.update(BOUNCE_LMP=LMP, BOUNCE_PLUGIN=PLUGIN, BOUNCE_CLI=CLI)
+    for folder in ("figures", name):
+        os.makedirs(os.path.join(args.out, folder), exist_ok=True)
+    return args, build
 
 
 def printed(output, name):
