@@ -111,7 +111,6 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
   double formation_bulk = 0.0;      // the bulk force's work since the contact formed
   const double owed = touching && s.update_history ? history[lent_force] : 0.0;
   models::CrackAdvance advance;
-  double stored_before = 0.0;  // U(a_{n-1}, xi_{n-1})
   double phi = 1.0;  // the part of the step the contact lasted
   if (!touching) {
     // It formed phi dt before now (K13 appendix B), at overlap 0, and its crack is fastest
@@ -147,7 +146,6 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
     }
     advance.dissipated = released;
   } else if (s.update_history) {
-    stored_before = crack.elastic_energy(g, before, state) + crack.surface_energy(g, state);
     advance = crack.advance(g, before, k.overlap, s.dt, state);
   }
   if (s.update_history) out.crack_dissipated = advance.dissipated;
@@ -208,6 +206,7 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
   const double xi_rate = rate(elastic, damping);
   const double fn = elastic + damping * xi_rate;
   const double previous = history[last_force];
+  const double elastic_energy = crack.elastic_energy(g, k.overlap, state), surface = crack.surface_energy(g, state);
   if (s.update_history) {
     history[crack_state] = state.contact_radius;
     history[crack_state + 1] = state.previous_radius;
@@ -221,9 +220,10 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
       // one differs by E* (a_n - a_n-1)(xi_n - xi_n-1)^2 / 2 a step, 2e-3 of the impact energy
       // where a relaxes fast after a snap-on (micrometre ice at half the sticking velocity).
       const double elastic_before = history[last_force] - history[last_bulk_force];
-      const double stored = crack.elastic_energy(g, k.overlap, state) + crack.surface_energy(g, state);
-      out.crack_dissipated = stored_before - stored + 0.5 * (elastic_before + elastic) * (k.overlap - before);
+      out.crack_dissipated = history[last_stored] - (elastic_energy + surface) +
+                             0.5 * (elastic_before + elastic) * (k.overlap - before);
     }
+    history[last_stored] = elastic_energy + surface;
     history[last_force] = fn;
     // The bulk force's work as velocity Verlet does it: from t_{n-1} to t_n the kinetic energy
     // at whole steps changes by exactly (dt/4)(F_{n-1} + F_n)(xi'_{n-1} + xi'_n), so that this
@@ -235,10 +235,8 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
     history[last_bulk_force] = bulk;
     history[last_rate] = xi_rate;
   }
-  if (s.energy) {
-    out.elastic = crack.elastic_energy(g, k.overlap, state);
-    out.surface = crack.surface_energy(g, state);
-  }
+  out.elastic = elastic_energy;
+  out.surface = surface;
   if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(m * k.overlap / fn) / s.dt;
   tangential(law, g, k, s, fn, touching ? previous : fn, history, out);
   out.normal = fn;

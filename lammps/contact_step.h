@@ -10,15 +10,17 @@ namespace bounce::lammps {
 
 // Per contact: the tangential spring (models::tangential_step), the last normal force; for a
 // crack law (krijt), then its state (models::CrackState, 4 values), the force its forming step
-// lent, and the last bulk force and overlap rate (for the energy it dissipates). A pair style
-// whose laws have no crack keeps the first history_size values only.
+// lent, the last bulk force and overlap rate, and the energy stored at the last step (for the
+// energies it dissipates). A pair style whose laws have no crack keeps the first history_size
+// values only.
 constexpr int history_size = 4;
-constexpr int crack_history_size = 11;
+constexpr int crack_history_size = 12;
 constexpr int last_force = 3;
 constexpr int crack_state = 4;
 constexpr int lent_force = 8;
 constexpr int last_bulk_force = 9;
 constexpr int last_rate = 10;
+constexpr int last_stored = 11;
 /// A contact whose elastic period pi sqrt(m_eff xi / F) is shorter than this many steps is
 /// reported (docs/lammps.md, Time step).
 constexpr double few_steps = 10.0;
@@ -36,7 +38,6 @@ struct StepSettings {
   double dt;
   bool update_history;  ///< false in LAMMPS's setup
   bool corrected;       ///< integration corrected (and not in setup)
-  bool energy = true;   ///< the stored energies are wanted (LAMMPS's eflag)
 };
 
 struct ContactForce {

@@ -275,7 +275,6 @@ void PairBounce::compute(int eflag, int vflag)
   settings.dt = update->dt;
   settings.update_history = !update->setupflag;
   settings.corrected = corrected_ && settings.update_history;  // setup: whole-step velocities
-  settings.energy = eflag != 0;
   double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *type = atom->type;

@@ -97,16 +97,15 @@ CrackStep implicit_crack_step(const KrijtParameters& p, double a_old, double bas
   // collision by < 1e-7 (measured at T_vis = 1e-14, 1e-12, 1e-11 s; its error is ~1e-4).
   {
     // beta = w^2 / (scale a), w = a^2 - delta R (K13 (14)); d beta / da = (4 a^2 w - w^2) / (scale a^2).
-    const double inverse_scale =
-        p.effective_modulus / (2.0 * pi * p.effective_radius * p.effective_radius * p.surface_energy);
-    const double scale = 1.0 / inverse_scale, delta_r = delta * p.effective_radius, hc = h * c;
+    const double scale = 2.0 * pi * p.effective_radius * p.effective_radius * p.surface_energy / p.effective_modulus;
+    const double delta_r = delta * p.effective_radius, hc = h * c;
     const bool from_old = !(guess > 0.0 && guess != a_old && std::abs(guess - a_old) < 0.1 * a_old);
     double a = from_old ? a_old : guess, residual_old = 0.0;
     bool ok = true;
     for (int i = 0; i < 12 && ok; i++) {
-      const double w = a * a - delta_r, w_over_a = w * inverse_scale / a;
+      const double w = a * a - delta_r, w_over_a = w / (scale * a);
       const double b = w * w_over_a;
-      if (!(w > 0.0 && b > bottom && b < top)) ok = false;
+      if (!(w > 0.0 && b > bottom && b * p.k < 1.0 - krijt_break_margin)) ok = false;  // b < top
       if (!ok) break;
       const double db = 4.0 * a * w_over_a - w_over_a * w_over_a * scale;
       const CrackSpeed f = crack_speed_function(b, p.k);
@@ -162,9 +161,9 @@ CrackStep krijt_crack_step(const KrijtParameters& p, double a_old, double delta,
 
 CrackStep krijt_crack_step(const KrijtParameters& p, double a_old, double delta, double dt, double a_older,
                            double ratio, double guess) {  // K13 (14)-(17) by variable-step BDF2
-  const double w = ratio, d = 1.0 + 2.0 * w;
-  const double base = ((1.0 + w) * (1.0 + w) * a_old - w * w * a_older) / d;
-  return implicit_crack_step(p, a_old, base, delta, (1.0 + w) / d * dt,
+  const double w = ratio, inverse_d = 1.0 / (1.0 + 2.0 * w);
+  const double base = ((1.0 + w) * (1.0 + w) * a_old - w * w * a_older) * inverse_d;
+  return implicit_crack_step(p, a_old, base, delta, (1.0 + w) * inverse_d * dt,
                              guess > 0.0 ? guess : a_old + w * (a_old - a_older));
 }
 
@@ -351,11 +350,11 @@ class KrijtContact final : public CrackContactLaw {
     // -(U(a_new) - U(a_old)), averaged over the overlaps at the step's start and end, with K13
     // (3) + (6), U = E* [a xi^2 - 2 a^3 xi / (3R) + a^5 / (5R^2)] - pi gamma a^2, in one
     // expression: U's change at fixed overlap is linear in xi and xi^2, whose averages it takes.
-    const double r = p.effective_radius, o3 = a_old * a_old * a_old, n3 = a_new * a_new * a_new;
+    const double inverse_r = 1.0 / p.effective_radius, o3 = a_old * a_old * a_old, n3 = a_new * a_new * a_new;
     const double mean = 0.5 * (delta + before), mean_square = 0.5 * (delta * delta + before * before);
     const double released =
-        p.effective_modulus * ((a_old - a_new) * mean_square - 2.0 * (o3 - n3) * mean / (3.0 * r) +
-                               (o3 * a_old * a_old - n3 * a_new * a_new) / (5.0 * r * r)) -
+        p.effective_modulus * ((a_old - a_new) * mean_square - (2.0 / 3.0) * (o3 - n3) * mean * inverse_r +
+                               0.2 * (o3 * a_old * a_old - n3 * a_new * a_new) * inverse_r * inverse_r) -
         pi * p.surface_energy * (a_old * a_old - a_new * a_new);
     return {released, step.broken};
   }
