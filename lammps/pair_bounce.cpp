@@ -54,7 +54,7 @@ PairBounce::PairBounce(LAMMPS *instance) : Pair(instance), fix_history_(nullptr)
   restartinfo = 0;
   no_virial_fdotr_compute = 1;
   // compute pair bounce: krijt's energies, crack- and bulk-dissipated (on this rank, since the
-  // run began), elastic and surface (stored in its contacts now) [J].
+  // pair style was defined), elastic and surface (stored in its contacts now) [J].
   nextra = 4;
   pvector = new double[nextra]();
   // A placeholder for the history fix, replaced in init_style, so that the fix list keeps the
@@ -153,7 +153,7 @@ void PairBounce::coeff(int narg, char **arg)
   // An adhesive contact holds beyond touching: its history must survive a neighbour-list build
   // that finds the pair apart (FixNeighHistory keeps it then only with beyond_contact).
   const bounce::models::ContactGeometry unit{1.0, 1.0};
-  if (entry->law.crack || entry->law.normal->release_overlap(unit) < 0.0) beyond_contact = 1;
+  if (entry->law.release_overlap(unit) < 0.0) beyond_contact = 1;
 
   const int n = atom->ntypes;
   int count = 0;
@@ -223,7 +223,7 @@ double PairBounce::reach(int itype, int jtype, double radius_i, double radius_j)
   const bounce::models::DemModel *l = law(itype, jtype);
   if (!l || radius_i <= 0.0 || radius_j <= 0.0) return 0.0;
   const bounce::models::ContactGeometry g{radius_i * radius_j / (radius_i + radius_j), 0.0};
-  return -(l->crack ? l->crack->release_overlap(g) : l->normal->release_overlap(g));
+  return -l->release_overlap(g);
 }
 
 // A contact too stiff for the time step: reported once per run and rank, with the numbers.
@@ -294,7 +294,7 @@ void PairBounce::compute(int eflag, int vflag)
       const double radsum = radius[i] + radius[j];
       double *history = &all_history[history_values_ * jj];
       // No contact, none before: its history is zero already (FixNeighHistory zeroes a new pair's,
-      // and contact_step an ended contact's), and is left alone (11 values for each neighbour).
+      // and contact_step an ended contact's), and is left alone (up to 12 values a neighbour).
       if (!touch[jj] && rsq >= radsum * radsum) continue;
       const bounce::models::DemModel &law = *this->law(type[i], type[j]);
       bounce::models::ContactGeometry g;

@@ -94,6 +94,10 @@ struct DemModel {
   std::string name;                            ///< the registry keyword
   std::shared_ptr<const ContactLaw> normal;
   std::shared_ptr<const CrackContactLaw> crack;
+  /// The overlap (<= 0) below which no contact of this law holds (its normal or crack law's).
+  double release_overlap(const ContactGeometry& g) const {
+    return crack ? crack->release_overlap(g) : normal->release_overlap(g);
+  }
   EndRule end_rule = EndRule::overlap;         ///< force: the force is never attractive
   std::optional<TangentialModel> tangential;   ///< with a friction coefficient
 };
