@@ -1,6 +1,9 @@
 #include "bounce/models/crack.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 
 namespace bounce::models {
 
@@ -49,10 +52,12 @@ CrackSpeed blend(const CrackSpeed& from, const CrackSpeed& to, double s, double 
 }  // namespace
 
 namespace {
+constexpr double low_band_bottom = 0.31, low_band_top = 3.6;  // where (17) holds alone
+
 CrackSpeed crack_speed_piecewise(double beta, double k) {
   if (k != 0.02) return crack_speed_high(beta, k);
   if (beta <= 0.29 || beta >= 3.7) return crack_speed_high(beta, k);
-  if (beta >= 0.31 && beta <= 3.6) return crack_speed_low(beta);
+  if (beta >= low_band_bottom && beta <= low_band_top) return crack_speed_low(beta);
   if (beta < 0.31) return blend(crack_speed_high(beta, k), crack_speed_low(beta), (beta - 0.29) / 0.02, 1.0 / 0.02);
   return blend(crack_speed_low(beta), crack_speed_high(beta, k), (beta - 3.6) / 0.1, 1.0 / 0.1);
 }
@@ -106,6 +111,63 @@ CrackSpeed crack_speed_function(double beta, double k) {
     cached_k = k;
   }
   return join(below, above, 1.0 - w, 1.0 + w, beta);
+}
+
+namespace {
+// The table's cells: 32 to a binade of x (K13 (17)'s 1/beta - 1 or beta - 1), binades 2^-14
+// (below the join's edge, 1e-4) to 2^1 (up to 4 > 1/0.31 - 1 and 3.6 - 1). x's exponent and its
+// first five mantissa bits are the cell, the other 47 bits the position t in it.
+constexpr int first_binade = -14, binades = 16, cell_bits = 5, cells_per_binade = 1 << cell_bits;
+constexpr int position_bits = 52 - cell_bits;
+}  // namespace
+
+CrackSpeedTable::CrackSpeedTable(double k) : k_(k), tabulated_(k == 0.02) {
+  if (!tabulated_) return;
+  // Cubic Hermite on each cell, from K13 (17)'s value and slope at its two ends (per unit t).
+  // Cubic Hermite on each cell, from K13 (17)'s value and slope at its two ends (per unit t),
+  // in (17)'s own variables: x = 1/beta - 1 below beta = 1, x = beta - 1 above.
+  auto build = [](bool above) {
+    std::vector<Cell> cells;
+    cells.reserve(binades * cells_per_binade);
+    for (int e = first_binade; e < first_binade + binades; e++)
+      for (int j = 0; j < cells_per_binade; j++) {
+        const double x0 = std::ldexp(1.0 + double(j) / cells_per_binade, e), width = std::ldexp(1.0 / cells_per_binade, e);
+        auto at = [&](double x) {  // f and df/dx times the width
+          const double beta = above ? 1.0 + x : 1.0 / (1.0 + x);
+          const CrackSpeed f = crack_speed_low(beta);
+          return std::pair{f.value, f.derivative * (above ? 1.0 : -beta * beta) * width};
+        };
+        const auto [f0, s0] = at(x0);
+        const auto [f1, s1] = at(x0 + width);
+        cells.push_back({f0, s0, 3.0 * (f1 - f0) - 2.0 * s0 - s1, 2.0 * (f0 - f1) + s0 + s1});
+      }
+    return cells;
+  };
+  below_ = build(false);
+  above_ = build(true);
+}
+
+CrackSpeed CrackSpeedTable::lookup(const std::vector<Cell>& cells, double x) const {
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  const int exponent = int(bits >> 52) - 1023;
+  const Cell& c = cells[std::size_t((exponent - first_binade) * cells_per_binade) +
+                        std::size_t((bits >> position_bits) & (cells_per_binade - 1))];
+  const double t = double(bits & ((std::uint64_t{1} << position_bits) - 1)) * std::ldexp(1.0, -position_bits);
+  // d/dx = d/dt / width, width = 2^(exponent - cell_bits).
+  const double per_width = std::bit_cast<double>(std::uint64_t(1023 + cell_bits - exponent) << 52);
+  return {c.c0 + t * (c.c1 + t * (c.c2 + t * c.c3)), (c.c1 + t * (2.0 * c.c2 + t * 3.0 * c.c3)) * per_width};
+}
+
+CrackSpeed CrackSpeedTable::operator()(double beta) const {
+  if (tabulated_ && beta >= low_band_bottom && beta <= low_band_top) {
+    if (beta <= 1.0 - crack_smoothing_width) {
+      const double inverse = 1.0 / beta;  // x = 1/beta - 1, dx/dbeta = -1/beta^2
+      const CrackSpeed f = lookup(below_, inverse - 1.0);
+      return {f.value, -f.derivative * inverse * inverse};
+    }
+    if (beta >= 1.0 + crack_smoothing_width) return lookup(above_, beta - 1.0);
+  }
+  return crack_speed_function(beta, k_);
 }
 
 }  // namespace bounce::models

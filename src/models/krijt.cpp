@@ -71,20 +71,39 @@ double krijt_hysteresis_estimate(const KrijtParameters& p, double speed) {
 
 namespace {
 
+// What a crack step needs of K13 (14)-(16) at one contact (a DEM law keeps the parts that do not
+// depend on R, so that a step divides no more than it must).
+struct CrackConstants {
+  double radius = 0.0;  // R
+  double scale = 0.0;   // 2 pi R^2 gamma / E*: beta = (a^2 - delta R)^2 / (scale a), K13 (14)
+  double speed = 0.0;   // c of K13 (16)
+  double k = 0.0;
+
+  explicit CrackConstants(const KrijtParameters& p)
+      : CrackConstants(p.effective_radius, 2.0 * pi * p.surface_energy / p.effective_modulus, p.crack_speed_scale(),
+                       p.k) {}
+  CrackConstants(double r, double scale_over_r2, double c, double k_)
+      : radius(r), scale(scale_over_r2 * r * r), speed(c), k(k_) {}
+};
+
 // The implicit crack step a - base = h c f(beta(a, delta)) (backward Euler: base = a_old, h = dt;
-// BDF2: base = (4 a_old - a_older) / 3, h = 2 dt / 3), taking the root connected to a_old.
-CrackStep implicit_crack_step(const KrijtParameters& p, double a_old, double base, double delta, double h,
-                              double guess) {
-  const double c = p.crack_speed_scale(), top = (1.0 - krijt_break_margin) / p.k, bottom = p.k * (1.0 + 1e-12);
+// BDF2: base = (4 a_old - a_older) / 3, h = 2 dt / 3), taking the root connected to a_old; f is
+// speed(beta), crack_speed_function or the DEM's CrackSpeedTable.
+template <class Speed>
+CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base, double delta, double h,
+                              double guess, const Speed& speed) {
+  const double c = p.speed, top = (1.0 - krijt_break_margin) / p.k, bottom = p.k * (1.0 + 1e-12);
+  const double scale = p.scale, delta_r = delta * p.radius;
   // K13 (14) squares a^2 - delta R, the stress intensity at the contact's edge; where it is
   // negative (a^2 < delta R: a contact smaller than Hertz's at this overlap, as a DEM's first step
   // can make it) the edge is compressed and closes as fast as the crack law allows (beta -> k),
   // not at the run-away that beta's square would mean.
   auto beta = [&](double a) {
-    return a * a <= delta * p.effective_radius ? 0.0 : effective_surface_energy_ratio(p, a, delta);
+    const double w = a * a - delta_r;
+    return w <= 0.0 ? 0.0 : w * w / (scale * a);
   };
   auto residual = [&](double a) {
-    return a - base - h * c * crack_speed_function(std::clamp(beta(a), bottom, top), p.k).value;
+    return a - base - h * c * speed(std::clamp(beta(a), bottom, top)).value;
   };
   // Newton from `guess` (a_old extrapolated): a DEM step moves a by a few per cent, and one or
   // two iterations land on the root. It is taken only where the residual increases at every
@@ -97,8 +116,7 @@ CrackStep implicit_crack_step(const KrijtParameters& p, double a_old, double bas
   // collision by < 1e-7 (measured at T_vis = 1e-14, 1e-12, 1e-11 s; its error is ~1e-4).
   {
     // beta = w^2 / (scale a), w = a^2 - delta R (K13 (14)); d beta / da = (4 a^2 w - w^2) / (scale a^2).
-    const double scale = 2.0 * pi * p.effective_radius * p.effective_radius * p.surface_energy / p.effective_modulus;
-    const double delta_r = delta * p.effective_radius, hc = h * c;
+    const double hc = h * c;
     const bool from_old = !(guess > 0.0 && guess != a_old && std::abs(guess - a_old) < 0.1 * a_old);
     double a = from_old ? a_old : guess, residual_old = 0.0;
     bool ok = true;
@@ -108,7 +126,7 @@ CrackStep implicit_crack_step(const KrijtParameters& p, double a_old, double bas
       if (!(w > 0.0 && b > bottom && b * p.k < 1.0 - krijt_break_margin)) ok = false;  // b < top
       if (!ok) break;
       const double db = 4.0 * a * w_over_a - w_over_a * w_over_a * scale;
-      const CrackSpeed f = crack_speed_function(b, p.k);
+      const CrackSpeed f = speed(b);
       const double slope = 1.0 - hc * f.derivative * db;
       if (!(slope >= 1.0)) {  // f' <= 0 and d beta/da >= 0, or the reverse: the residual grows
         ok = false;
@@ -153,18 +171,27 @@ CrackStep implicit_crack_step(const KrijtParameters& p, double a_old, double bas
   return {0.0, true};
 }
 
+// BDF2 with variable steps: the base and the step h of implicit_crack_step.
+template <class Speed>
+CrackStep bdf2_crack_step(const CrackConstants& p, double a_old, double delta, double dt, double a_older, double ratio,
+                          double guess, const Speed& speed) {
+  const double w = ratio, inverse_d = 1.0 / (1.0 + 2.0 * w);
+  const double base = ((1.0 + w) * (1.0 + w) * a_old - w * w * a_older) * inverse_d;
+  return implicit_crack_step(p, a_old, base, delta, (1.0 + w) * inverse_d * dt,
+                             guess > 0.0 ? guess : a_old + w * (a_old - a_older), speed);
+}
+
 }  // namespace
 
 CrackStep krijt_crack_step(const KrijtParameters& p, double a_old, double delta, double dt) {  // K13 (14)-(17)
-  return implicit_crack_step(p, a_old, a_old, delta, dt, a_old);
+  return implicit_crack_step(CrackConstants(p), a_old, a_old, delta, dt, a_old,
+                             [&](double b) { return crack_speed_function(b, p.k); });
 }
 
 CrackStep krijt_crack_step(const KrijtParameters& p, double a_old, double delta, double dt, double a_older,
                            double ratio, double guess) {  // K13 (14)-(17) by variable-step BDF2
-  const double w = ratio, inverse_d = 1.0 / (1.0 + 2.0 * w);
-  const double base = ((1.0 + w) * (1.0 + w) * a_old - w * w * a_older) * inverse_d;
-  return implicit_crack_step(p, a_old, base, delta, (1.0 + w) * inverse_d * dt,
-                             guess > 0.0 ? guess : a_old + w * (a_old - a_older));
+  return bdf2_crack_step(CrackConstants(p), a_old, delta, dt, a_older, ratio, guess,
+                         [&](double b) { return crack_speed_function(b, p.k); });
 }
 
 namespace {
@@ -273,7 +300,8 @@ class JkrViscoelasticContact final : public ContactLaw {
 // K13's run-away.
 class KrijtContact final : public CrackContactLaw {
  public:
-  explicit KrijtContact(const KrijtParameters& p) : p_(p) {}
+  explicit KrijtContact(const KrijtParameters& p)
+      : p_(p), scale_over_r2_(2.0 * pi * p.surface_energy / p.effective_modulus), c_(p.crack_speed_scale()), speed_(p.k) {}
   CrackState form(const ContactGeometry& g, double& dissipated) const override {  // K13 appendix B
     const KrijtParameters p = at(g);
     const double a0 = krijt_formation_radius(p);
@@ -282,7 +310,7 @@ class KrijtContact final : public CrackContactLaw {
   }
   CrackAdvance advance(const ContactGeometry& g, double before, double delta, double dt, CrackState& s,
                        bool refine) const override {
-    const KrijtParameters p = at(g);
+    const CrackConstants p(g.effective_radius, scale_over_r2_, c_, p_.k);
     CrackState one = s;
     const CrackAdvance whole = step(p, before, delta, dt, one);
     if (!refine) {
@@ -317,8 +345,7 @@ class KrijtContact final : public CrackContactLaw {
             bulk_dissipative_force(p_, a, 1.0)};  // (19) does not depend on R
   }
   double elastic_energy(const ContactGeometry& g, double delta, const CrackState& s) const override {  // K13 (3)
-    const KrijtParameters p = at(g);
-    return contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, s.contact_radius, delta);
+    return contact::independent::elastic_energy({g.effective_radius, p_.effective_modulus}, s.contact_radius, delta);
   }
   double surface_energy(const ContactGeometry&, const CrackState& s) const override {  // K13 (6)
     return contact::independent::surface_energy(s.contact_radius, p_.surface_energy);
@@ -332,7 +359,7 @@ class KrijtContact final : public CrackContactLaw {
   // One crack step: BDF2 where the step before is known and of about the same length; backward
   // Euler otherwise (the first step, or the doubling stretches of a forming contact, where BDF2
   // left a 0.6 % too large against 0.08 % for backward Euler).
-  static CrackAdvance step(const KrijtParameters& p, double before, double delta, double dt, CrackState& s) {
+  CrackAdvance step(const CrackConstants& p, double before, double delta, double dt, CrackState& s) const {
     const double ratio = s.previous_step > 0.0 ? dt / s.previous_step : 0.0;
     const bool uniform = ratio > 0.9 && ratio < 1.1;
     // Newton's first guess: a quadratic through the last three radii where the steps were
@@ -340,8 +367,9 @@ class KrijtContact final : public CrackContactLaw {
     const double guess = uniform && s.older_radius > 0.0
                              ? 3.0 * s.contact_radius - 3.0 * s.previous_radius + s.older_radius
                              : 0.0;
-    const CrackStep step = uniform ? krijt_crack_step(p, s.contact_radius, delta, dt, s.previous_radius, ratio, guess)
-                                   : krijt_crack_step(p, s.contact_radius, delta, dt);
+    const CrackStep step =
+        uniform ? bdf2_crack_step(p, s.contact_radius, delta, dt, s.previous_radius, ratio, guess, speed_)
+                : implicit_crack_step(p, s.contact_radius, s.contact_radius, delta, dt, s.contact_radius, speed_);
     const double a_old = s.contact_radius, a_new = step.broken ? 0.0 : step.contact_radius;
     s.older_radius = uniform ? s.previous_radius : 0.0;
     s.previous_radius = a_old;
@@ -350,12 +378,12 @@ class KrijtContact final : public CrackContactLaw {
     // -(U(a_new) - U(a_old)), averaged over the overlaps at the step's start and end, with K13
     // (3) + (6), U = E* [a xi^2 - 2 a^3 xi / (3R) + a^5 / (5R^2)] - pi gamma a^2, in one
     // expression: U's change at fixed overlap is linear in xi and xi^2, whose averages it takes.
-    const double inverse_r = 1.0 / p.effective_radius, o3 = a_old * a_old * a_old, n3 = a_new * a_new * a_new;
+    const double inverse_r = 1.0 / p.radius, o3 = a_old * a_old * a_old, n3 = a_new * a_new * a_new;
     const double mean = 0.5 * (delta + before), mean_square = 0.5 * (delta * delta + before * before);
     const double released =
-        p.effective_modulus * ((a_old - a_new) * mean_square - (2.0 / 3.0) * (o3 - n3) * mean * inverse_r +
-                               0.2 * (o3 * a_old * a_old - n3 * a_new * a_new) * inverse_r * inverse_r) -
-        pi * p.surface_energy * (a_old * a_old - a_new * a_new);
+        p_.effective_modulus * ((a_old - a_new) * mean_square - (2.0 / 3.0) * (o3 - n3) * mean * inverse_r +
+                                0.2 * (o3 * a_old * a_old - n3 * a_new * a_new) * inverse_r * inverse_r) -
+        pi * p_.surface_energy * (a_old * a_old - a_new * a_new);
     return {released, step.broken};
   }
 
@@ -366,6 +394,8 @@ class KrijtContact final : public CrackContactLaw {
     return p;
   }
   KrijtParameters p_;
+  double scale_over_r2_, c_;  // CrackConstants' parts that do not depend on R
+  CrackSpeedTable speed_;     // K13 (16)/(17) at p_.k
 };
 
 }  // namespace
