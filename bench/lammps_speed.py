@@ -6,8 +6,8 @@
    `pair_style granular hertz/material ... damping viscoelastic` with the coefficients
    `bounce lammps` prints; LAMMPS's own timer of the Pair section per step and contact;
 2. krijt (K13's crack law) against the plugin's viscoelastic law with the same A, on a dense gas
-   of micrometre water-ice grains whose contacts stick and persist (the Pair section per step and
-   contact);
+   of micrometre water-ice grains whose contacts stick and persist, and on a gas of colliding
+   ones whose contacts form and break (the Pair section per step and contact);
 3. strong scaling: 103 823 grains on 1 and 2 ranks (loop time).
 
     /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR]      (after make lammps)
@@ -82,36 +82,49 @@ def per_contact():
               f"whole loop {loop:.2f} s (x{loop / base[1]:.2f})")
 
 
-def krijt_cost():
-    """Per contact, krijt against viscoelastic with A = T_vis / nu^2 (K13 after (18)): 1 um
-    water-ice grains (K13 table 2) on a simple cubic lattice pressed 2 nm into each other (volume
-    fraction 0.525), at 1 m/s rms, below the sticking velocity (1.9 m/s at T_vis = 1e-12 s): six
-    contacts a grain that hold, and some that open and close; dt = t_H/100 at 1 m/s. The same
-    skin for both (krijt's neck reaches 37 nm beyond touching)."""
+def krijt_against_viscoelastic(title, phi, speed, dt, steps):
+    """krijt (T_vis = 1e-12 s) against viscoelastic with A = T_vis / nu^2 (K13 after (18)) on a gas
+    of 1 um water-ice grains (K13 table 2) at volume fraction `phi` and rms `speed`, the same skin
+    for both (krijt's neck reaches 37 nm beyond touching); the Pair section per step and contact,
+    the fastest of three interleaved runs."""
     tvis, radius = 1e-12, 1e-6
     ice = "material water-ice"
     styles = [("pair_style bounce viscoelastic, A = T_vis/nu^2", f"viscoelastic {ice} A {tvis / 0.25 ** 2!r}"),
               ("pair_style bounce krijt, T_vis = 1e-12 s", f"krijt {ice} tvis {tvis!r}")]
     extra = "compute touch all contact/atom\ncompute total all reduce sum c_touch\nthermo_style custom step c_ke c_total"
-    cells, steps = 22, 1000
+    cells = 22
     best = {}
     for _ in range(3):
         for label, coeff in styles:
-            script = L.gas_script(coeff, cells=cells, radius=radius, density=1000.0, phi=0.525, speed=1.0, dt=1.1e-10,
-                                  steps=steps, thermo=max(steps // 5, 1), extra=extra, skin=0.1 * radius)
+            script = L.gas_script(coeff, cells=cells, radius=radius, density=1000.0, phi=phi, speed=speed, dt=dt,
+                                  steps=steps, thermo=max(steps // 10, 1), extra=extra, skin=0.1 * radius)
             _, out = L.run_lammps(script)
             pair = section(out, "Pair")
             if label not in best or pair < best[label][0]:
                 best[label] = (pair, contacts(out))
     n = cells ** 3
-    print(f"{n} micrometre ice grains in contact (volume fraction 0.525), {steps} steps of t_H/100; Pair time per step and "
-          "contact:")
+    print(f"{n} micrometre ice grains {title} (volume fraction {phi}, {speed} m/s rms), {steps} steps of t_H/100; Pair "
+          "time per step and contact:")
     base = None
     for label, _ in styles:
         pair, c = best[label]
         per = pair / steps / c
         base = base or per
-        print(f"  {label:50s} {per * 1e9:6.1f} ns/contact ({2 * c / n:.2f} contacts/grain): x{per / base:.2f}")
+        print(f"  {label:50s} {per * 1e9:6.1f} ns/contact ({2 * c / n:.3f} contacts/grain): x{per / base:.2f}")
+
+
+def krijt_cost():
+    """Contacts that hold: the grains on a simple cubic lattice pressed 2 nm into each other (volume
+    fraction 0.525), at 1 m/s rms, below the sticking velocity (1.9 m/s at T_vis = 1e-12 s): six
+    contacts a grain that hold, and some that open and close; dt = t_H/100 at 1 m/s."""
+    krijt_against_viscoelastic("in contact", phi=0.525, speed=1.0, dt=1.1e-10, steps=1000)
+
+
+def krijt_gas_cost():
+    """Contacts that form and break all the time (krijt's formation and break cost more than its
+    steps): volume fraction 0.3, rms speed 5 m/s (2.7 times the sticking velocity, so that most
+    collisions bounce), dt = 6e-11 s (t_H/100 at 5 m/s)."""
+    krijt_against_viscoelastic("colliding", phi=0.3, speed=5.0, dt=6e-11, steps=3000)
 
 
 def scaling():
@@ -135,5 +148,6 @@ if __name__ == "__main__":
     start = time.time()
     per_contact()
     krijt_cost()
+    krijt_gas_cost()
     scaling()
     print(f"({time.time() - start:.0f} s)")

@@ -68,6 +68,56 @@ void tangential(const models::DemModel& law, const models::ContactGeometry& g, c
                           out.tangential);
 }
 
+/* The step in which one crack step breaks a contact (K13's run-away), with `corrected`: from the
+   last step's state the crack moves through 16 stretches of the step (the run-away is steep, one
+   crack step of the whole would time it badly), and in the stretch where it breaks the break is
+   found by bisection. The impulse up to there is the trapezoidal rule's on the stretches, less
+   the F_{n-1} dt/2 the last step already gave and the force `owed` back; all the energy of the
+   contact at the break is the crack's. Returns whether it broke inside the step; where the
+   stretches hold it to the step's end, `held` is their end state. */
+template <class ForceAt>
+bool break_inside_step(const models::CrackContactLaw& crack, const models::ContactGeometry& g, double before,
+                       double overlap, const StepSettings& s, const double* history, double owed, const ForceAt& force_at,
+                       ContactForce& out, models::CrackState& held) {
+  models::CrackState now{history[crack_state], history[crack_state + 1], history[crack_state + 2],
+                         history[crack_state + 3]};
+  const double f_last = history[last_force];
+  auto overlap_at = [&](double theta) { return before + theta * (overlap - before); };
+  auto advance = [&](double from, double length, models::CrackState& state) {
+    return crack.advance(g, overlap_at(from), overlap_at(from + length), length * s.dt, state, models::Refinement::none);
+  };
+  double impulse = 0.0, released = 0.0, theta = 0.0, f_from = f_last;
+  constexpr double stretch = 1.0 / 16.0;
+  for (; theta < 1.0; theta += stretch) {
+    models::CrackState next = now;
+    const models::CrackAdvance a = advance(theta, stretch, next);
+    if (a.broken) {
+      double lo = 0.0, hi = stretch;
+      for (int i = 0; i < 12; i++) {  // to 2^-16 of the step
+        const double mid = 0.5 * (lo + hi);
+        models::CrackState probe = now;
+        (advance(theta, mid, probe).broken ? hi : lo) = mid;
+      }
+      next = now;
+      released += advance(theta, lo, next).dissipated;
+      const double f_to = force_at(overlap_at(theta + lo), next);
+      impulse += 0.5 * lo * (f_from + f_to);
+      released += crack.elastic_energy(g, overlap_at(theta + lo), next) + crack.surface_energy(g, next);
+      out.normal = impulse - 0.5 * f_last - owed;
+      out.bulk_dissipated = 0.5 * (theta + lo) * s.dt * history[last_bulk_force] * history[last_rate];
+      out.crack_dissipated = released;
+      return true;
+    }
+    released += a.dissipated;
+    const double f_to = force_at(overlap_at(theta + stretch), next);
+    impulse += 0.5 * stretch * (f_from + f_to);
+    f_from = f_to;
+    now = next;
+  }
+  held = now;
+  return false;
+}
+
 /* A crack law's contact (krijt, docs/lammps.md, K13's contact in LAMMPS). Its radius a is the
    history's; each step moves it to the step's overlap by the law's stable update, then
      F = F_E(a, xi) + D(a) xi',
@@ -93,16 +143,16 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
   auto rate = [&](double elastic, double damping) {
     return s.corrected ? (-k.vn - half_step_over_m * elastic) / (1.0 + half_step_over_m * damping) : -k.vn;
   };
-  // The bulk force's power D xi'^2 at overlap xi.
-  auto bulk_at = [&](double xi, const models::CrackState& state) {
+  // The force at overlap xi, and the bulk force's power D xi'^2 there.
+  struct Point {
+    double force, bulk;
+  };
+  auto at = [&](double xi, const models::CrackState& state) {
     const auto [elastic, damping] = crack.force(g, xi, state);
     const double r = rate(elastic, damping);
-    return damping * r * r;
+    return Point{elastic + damping * r, damping * r * r};
   };
-  auto force_at = [&](double xi, const models::CrackState& state) {
-    const auto [elastic, damping] = crack.force(g, xi, state);
-    return elastic + damping * rate(elastic, damping);
-  };
+  auto force_at = [&](double xi, const models::CrackState& state) { return at(xi, state).force; };
 
   models::CrackState state{history[crack_state], history[crack_state + 1], history[crack_state + 2],
                            history[crack_state + 3]};
@@ -124,79 +174,44 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
     double released = 0.0;
     state = crack.form(g, released);
     if (s.corrected && before < 0.0) phi = k.overlap / (k.overlap - before);
-    models::CrackState previous_state = state;
     double from = 0.0;
+    Point at_from = at(0.0, state);
     for (int j = -12; from < 1.0 && !advance.broken; j++) {
       const double to = j <= -4 ? std::ldexp(1.0, j) : from + 1.0 / 16.0;
       const models::CrackAdvance a =
-          crack.advance(g, from * k.overlap, to * k.overlap, (to - from) * phi * s.dt, state, false);
+          crack.advance(g, from * k.overlap, to * k.overlap, (to - from) * phi * s.dt, state, models::Refinement::none);
       released += a.dissipated;
       advance.broken = a.broken;
-      if (s.corrected) {
-        const double mean = 0.5 * (force_at(from * k.overlap, previous_state) + force_at(to * k.overlap, state));
-        formation_impulse += mean * (to - from) * phi;
-        lent += mean * (to - from) * phi * (1.0 - 0.5 * (from + to)) * phi;
-      }
+      const Point at_to = at(to * k.overlap, state);
+      const double mean = 0.5 * (at_from.force + at_to.force);
+      formation_impulse += mean * (to - from) * phi;
+      lent += mean * (to - from) * phi * (1.0 - 0.5 * (from + to)) * phi;
       // The bulk force's work on the same stretches (a grows fastest first: a straight line
       // from 0 to its end value missed 1e-2 of the impact energy at T_vis = 1e-10 s).
-      formation_bulk += 0.5 * (bulk_at(from * k.overlap, previous_state) + bulk_at(to * k.overlap, state)) *
-                        (to - from) * phi * s.dt;
-      previous_state = state;
+      formation_bulk += 0.5 * (at_from.bulk + at_to.bulk) * (to - from) * phi * s.dt;
+      at_from = at_to;
       from = to;
     }
     advance.dissipated = released;
   } else if (s.update_history) {
-    advance = crack.advance(g, before, k.overlap, s.dt, state);
+    // (With `corrected` a step that one crack step breaks is divided by break_inside_step, which
+    // times the break; the law's division would be the same.)
+    advance = crack.advance(g, before, k.overlap, s.dt, state,
+                            touching && s.corrected ? models::Refinement::unless_broken : models::Refinement::full);
   }
   if (s.update_history) out.crack_dissipated = advance.dissipated;
 
-  if (advance.broken) {  // K13's end, inside this step
-    if (touching && s.corrected) {
-      // The crack runs away inside the step: from the last step's state it moves through 16
-      // stretches of the step (K13's run-away is steep, one crack step of the whole would time
-      // it badly), and in the stretch where it breaks the break is found by bisection. The
-      // impulse up to there is the trapezoidal rule's on the stretches, less the F_{n-1} dt/2
-      // the last step already gave; all the energy of the contact at the break is the crack's.
-      models::CrackState now{history[crack_state], history[crack_state + 1], history[crack_state + 2],
-                             history[crack_state + 3]};
-      const double f_last = history[last_force];
-      auto overlap_at = [&](double theta) { return before + theta * (k.overlap - before); };
-      double impulse = 0.0, released = 0.0, theta = 0.0, f_from = f_last, theta_end = 1.0;
-      constexpr double stretch = 1.0 / 16.0;
-      while (theta < 1.0) {
-        models::CrackState next = now;
-        const models::CrackAdvance a = crack.advance(g, overlap_at(theta), overlap_at(theta + stretch),
-                                                     stretch * s.dt, next, false);
-        if (a.broken) {
-          double lo = 0.0, hi = stretch;
-          for (int i = 0; i < 12; i++) {  // to 2^-16 of the step
-            const double mid = 0.5 * (lo + hi);
-            models::CrackState probe = now;
-            (crack.advance(g, overlap_at(theta), overlap_at(theta + mid), mid * s.dt, probe, false).broken ? hi : lo) =
-                mid;
-          }
-          next = now;
-          released += crack.advance(g, overlap_at(theta), overlap_at(theta + lo), lo * s.dt, next, false).dissipated;
-          const double f_to = force_at(overlap_at(theta + lo), next);
-          impulse += 0.5 * lo * (f_from + f_to);
-          released += crack.elastic_energy(g, overlap_at(theta + lo), next) + crack.surface_energy(g, next);
-          theta_end = theta + lo;
-          break;
-        }
-        released += a.dissipated;
-        const double f_to = force_at(overlap_at(theta + stretch), next);
-        impulse += 0.5 * stretch * (f_from + f_to);
-        f_from = f_to;
-        now = next;
-        theta += stretch;
-      }
-      // (The stretches may hold the contact to the step's end where one step broke it: it ends
-      // there.)
-      if (theta >= 1.0) released += crack.elastic_energy(g, k.overlap, now) + crack.surface_energy(g, now);
-      out.normal = impulse - 0.5 * f_last - owed;
-      out.bulk_dissipated = 0.5 * theta_end * s.dt * history[last_bulk_force] * history[last_rate];
-      out.crack_dissipated = released;
+  if (advance.broken && touching && s.corrected) {
+    if (break_inside_step(crack, g, before, k.overlap, s, history, owed, force_at, out, state)) {
+      clear(touch, history, crack_history_size);
+      return out;
     }
+    // Its stretches held the contact to the step's end where one crack step broke it: their end
+    // is the step's, in `state` (the next step's crack update, after these stretches, is backward
+    // Euler's).
+    advance.broken = false;
+  }
+  if (advance.broken) {  // K13's end, inside this step
     clear(touch, history, crack_history_size);
     return out;
   }

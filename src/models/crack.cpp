@@ -113,6 +113,10 @@ CrackSpeed crack_speed_function(double beta, double k) {
   return join(below, above, 1.0 - w, 1.0 + w, beta);
 }
 
+bool crack_speed_concave(double beta, double k) {  // K13 (17)
+  return k == 0.02 && beta >= 1.0 + crack_smoothing_width && beta <= low_band_top;
+}
+
 namespace {
 // The table's cells: 32 to a binade of x (K13 (17)'s 1/beta - 1 or beta - 1), binades 2^-14
 // (below the join's edge, 1e-4) to 2^1 (up to 4 > 1/0.31 - 1 and 3.6 - 1). x's exponent and its
@@ -123,7 +127,6 @@ constexpr int position_bits = 52 - cell_bits;
 
 CrackSpeedTable::CrackSpeedTable(double k) : k_(k), tabulated_(k == 0.02) {
   if (!tabulated_) return;
-  // Cubic Hermite on each cell, from K13 (17)'s value and slope at its two ends (per unit t).
   // Cubic Hermite on each cell, from K13 (17)'s value and slope at its two ends (per unit t),
   // in (17)'s own variables: x = 1/beta - 1 below beta = 1, x = beta - 1 above.
   auto build = [](bool above) {

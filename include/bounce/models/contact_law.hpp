@@ -55,6 +55,14 @@ struct CrackAdvance {
   bool broken = false;      ///< the contact ended inside the step
 };
 
+/// How CrackContactLaw::advance may divide a step in which the crack moves fast.
+enum class Refinement {
+  none,           ///< not at all: the caller divides the step already
+  full,           ///< where its error estimate asks for it, and where one step breaks the contact
+  unless_broken,  ///< as `full`, but a step that one step breaks is returned broken, undivided:
+                  ///< the caller divides it (a DEM's breaking step, which it times itself)
+};
+
 /// A contact law whose contact radius a is independent of the overlap and moves by a crack law
 /// (K13's): its force depends on (a, xi, xi'), and a DEM keeps a per contact between steps.
 class CrackContactLaw {
@@ -69,10 +77,9 @@ class CrackContactLaw {
   /// change of a at fixed overlap, averaged over the step's two overlaps, so that the rest of
   /// the change of the contact's energy is the trapezoidal work of its elastic force (the energy
   /// budget of a DEM closes to second order in dt).
-  /// `refine`: a step in which the crack moves fast may be taken as several (false where the
-  /// caller already divides the step).
+  /// `refine`: whether a step in which the crack moves fast may be taken as several.
   virtual CrackAdvance advance(const ContactGeometry& g, double before, double overlap, double dt, CrackState& s,
-                               bool refine = true) const = 0;
+                               Refinement refine = Refinement::full) const = 0;
   /// The elastic force [N] (positive: repulsive) and the bulk force's coefficient D [kg/s]:
   /// the total force is elastic + D xi'.
   struct Force {

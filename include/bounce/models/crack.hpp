@@ -42,6 +42,13 @@ CrackSpeed crack_speed_high(double beta, double k);
 /// K13 (17) alone (k = 0.02), for 0 < beta (beta != 1 excluded from nothing: f(1) = 0).
 CrackSpeed crack_speed_low(double beta);
 
+/// Whether f is concave at beta (f'' <= 0, f' < 0), where that holds in closed form: for
+/// k = 0.02 where (17) holds alone above beta = 1, 1 + crack_smoothing_width <= beta <= 3.6
+/// ((17) there is -(a x + b) x^p with a, b > 0, p = 1.1403 > 1 and x = beta - 1, whose second
+/// derivative is -(a p (p + 1) x^(p-1) + b p (p - 1) x^(p-2)) < 0). Elsewhere false: the join
+/// and the blends are not concave everywhere, nor is (16) near beta = 1 (its 1 / ln).
+bool crack_speed_concave(double beta, double k);
+
 /// crack_speed_function at one k, for a DEM code that evaluates it once per contact and step:
 /// for k = 0.02, where (17) alone holds (0.31 <= beta <= 3.6) and outside the join around
 /// beta = 1, f and f' come from a cubic Hermite table of (17)'s own values and slopes, on cells

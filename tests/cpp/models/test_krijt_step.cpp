@@ -2,12 +2,14 @@
 // a head-on collision integrated by a leapfrog in time steps of t_H/100 and t_H/400, with the
 // contact radius updated by the backward-Euler crack step, against the stiff single-collision
 // engine (its COR error is below 1e-8).
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "bounce/analysis/collide.hpp"
 #include "bounce/contact/jkr.hpp"
+#include "bounce/models/crack.hpp"
 #include "bounce/models/krijt.hpp"
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/materials_table.hpp"
@@ -94,4 +96,54 @@ TEST(KrijtStep, FastCrackLandsOnTheJkrBranch) {
       EXPECT_NEAR(step.contact_radius, jkr, 1e-4 * jkr) << delta << " from " << start;
     }
   }
+}
+
+// A neck running away (delta < 0, a^2 < -delta R / 3, where beta rises as a falls) and one just
+// before it: Newton's descent on the convex residual (docs/lammps.md, K13's contact in LAMMPS,
+// item 1) lands on the root connected to a_old, which a scan of the residual down from a_old in
+// steps of 1e-5 a_old and a bisection find independently; or, where that scan meets beta >= 1/k
+// first, on none (the neck breaks). Newton stops at a correction below 1e-4 a, so its error is
+// ~(1e-4)^2 a; the bound, 1e-6, also covers the scan's bisection (1e-12 a).
+TEST(KrijtStep, NewtonFindsTheConnectedRootOfARunningAwayNeck) {
+  const Case c = krijt_case(1e-12, 6.0);
+  const models::KrijtParameters& p = c.model.dynamic_contact->parameters;
+  const double top = (1.0 - models::krijt_break_margin) / p.k, bottom = p.k * (1.0 + 1e-12);
+  int roots = 0, breaks = 0;
+  for (double delta : {-1e-9, -2e-9, -3e-9, -3.7e-9}) {
+    const double meeting = std::sqrt(-delta * p.effective_radius / 3.0);
+    for (double dt : {1e-12, 1e-11, 8e-11}) {
+      for (double ratio = 0.6; ratio <= 1.6; ratio += 0.05) {
+        const double a_old = ratio * meeting;
+        auto beta = [&](double a) { return models::effective_surface_energy_ratio(p, a, delta); };
+        auto residual = [&](double a) {
+          return a - a_old - dt * p.crack_speed_scale() * models::crack_speed_function(std::clamp(beta(a), bottom, top), p.k).value;
+        };
+        if (beta(a_old) <= 1.0 + 1e-4 || beta(a_old) >= 3.6 || residual(a_old) <= 0.0) continue;  // shrinking, (17)
+        SCOPED_TRACE(testing::Message() << "delta " << delta << " dt " << dt << " a_old/meeting " << ratio);
+        double hi = a_old, expected = -1.0;
+        for (double a = a_old * (1.0 - 1e-5); a > 1e-3 * a_old; a -= 1e-5 * a_old) {
+          if (beta(a) >= top) break;  // rising as a falls below the meeting point: broken
+          if (residual(a) <= 0.0) {
+            double lo = a;
+            while (hi - lo > 1e-12 * a_old) (residual(0.5 * (lo + hi)) <= 0.0 ? lo : hi) = 0.5 * (lo + hi);
+            expected = 0.5 * (lo + hi);
+            break;
+          }
+          hi = a;
+        }
+        const models::CrackStep step = models::krijt_crack_step(p, a_old, delta, dt);
+        if (expected < 0.0) {
+          EXPECT_TRUE(step.broken);
+          breaks++;
+        } else {
+          ASSERT_FALSE(step.broken);
+          EXPECT_NEAR(step.contact_radius, expected, 1e-6 * expected);
+          roots++;
+        }
+      }
+    }
+  }
+  // The cases cover both outcomes, on both sides of the meeting point.
+  EXPECT_GT(roots, 20);
+  EXPECT_GT(breaks, 5);
 }
