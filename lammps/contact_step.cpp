@@ -195,13 +195,13 @@ ContactForce crack_step(const models::DemModel& law, const models::ContactGeomet
     advance.dissipated = released;
   } else if (s.update_history) {
     // (With `corrected` a step that one crack step breaks is divided by break_inside_step, which
-    // times the break; the law's division would be the same.)
+    // times the break, into the 16 stretches the law would divide it into.)
     advance = crack.advance(g, before, k.overlap, s.dt, state,
-                            touching && s.corrected ? models::Refinement::unless_broken : models::Refinement::full);
+                            s.corrected ? models::Refinement::unless_broken : models::Refinement::full);
   }
   if (s.update_history) out.crack_dissipated = advance.dissipated;
 
-  if (advance.broken && touching && s.corrected) {
+  if (advance.broken && s.corrected && touching) {
     if (break_inside_step(crack, g, before, k.overlap, s, history, owed, force_at, out, state)) {
       clear(touch, history, crack_history_size);
       return out;

@@ -108,57 +108,54 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
   };
   // Newton from `guess` (a_old extrapolated): a DEM step moves a by a few per cent, and one or
   // two iterations land on the root. It is taken where the residual increases at every iterate
-  // (beta and f' of one sign) and beta stays inside (k, 1/k); from a_old, when the root lies on
-  // the side of a_old the residual's sign there points to (the connected root, as the search
-  // below finds it), and from another guess when it is within 25 % of a_old. It stops at a step
-  // below 1e-4 a (Newton's next error, ~(1e-4)^2 a): from the quadratic predictor that is mostly
-  // the first iterate, one crack-law evaluation a step, and against stopping at 1e-9 a it moves
-  // the COR of a DEM collision by < 1e-7 (measured at T_vis = 1e-14, 1e-12, 1e-11 s; its error
-  // is ~1e-4).
+  // (beta and f' of opposite signs) and beta stays inside (k, 1/k); from a_old, when the root
+  // lies on the side of a_old the residual's sign there points to (the connected root, as the
+  // search below finds it), and from another guess when it is within 25 % of a_old. It stops at
+  // a step below 1e-4 a (Newton's next error, ~(1e-4)^2 a where the root is simple): from the
+  // quadratic predictor that is mostly the first iterate, one crack-law evaluation a step, and
+  // against stopping at 1e-9 a it moves the COR of a DEM collision by < 1e-7 (measured at
+  // T_vis = 1e-14, 1e-12, 1e-11 s; its error is ~1e-4).
   // A neck that runs away is on the other branch, delta < 0 and a^2 < -delta R / 3, where beta
   // rises as a falls: the residual's slope is below 1 there. Where f is concave in beta
   // (crack_speed_concave: f' < 0, f'' <= 0) the residual a - base - h c f(beta(a)) is convex in a
   // on both branches, since beta is (beta'' = (6a + 2 (delta R)^2 / a^3) / scale > 0): Newton
   // from a_old, where the residual and its slope are positive, then descends to the connected
-  // root without passing it. Such iterates are taken from a_old (a guess that meets that branch
-  // restarts from a_old) while beta, at every iterate and at the branches' meeting point
-  // a^2 = -delta R / 3 where a step passes it (beta's least value), stays where f is concave.
-  // Elsewhere, and where the neck breaks in the step (no root), the search below decides.
-  {
+  // root without passing it. Such iterates are taken from a_old while beta, at every iterate and
+  // at the branches' meeting point a^2 = -delta R / 3 where a step passes it (beta's least
+  // value), stays where f is concave. Where Newton from the guess fails (it meets that branch,
+  // say) Newton from a_old is tried; where that fails too, and where the neck breaks in the step
+  // (no root), the search below decides.
+  const double hc = h * c;
+  const double meeting = delta_r < 0.0 ? std::sqrt(-delta_r / 3.0) : 0.0;  // the branches' meeting point
+  auto concave = [&](double b) { return crack_speed_concave(b, p.k); };
+  auto newton = [&](bool from_old) -> std::optional<double> {
     // beta = w^2 / (scale a), w = a^2 - delta R (K13 (14)); d beta / da = (4 a^2 w - w^2) / (scale a^2).
-    const double hc = h * c;
-    bool from_old = !(guess > 0.0 && guess != a_old && std::abs(guess - a_old) < 0.1 * a_old);
     double a = from_old ? a_old : guess, residual_old = 0.0;
-    const double meeting = delta_r < 0.0 ? std::sqrt(-delta_r / 3.0) : 0.0;  // the branches' meeting point
-    auto concave = [&](double b) { return crack_speed_concave(b, p.k); };
     bool descending = from_old;  // from a_old, every iterate so far with positive residual and f concave
     for (int i = 0; i < 16; i++) {
       const double w = a * a - delta_r, w_over_a = w / (scale * a);
       const double b = w * w_over_a;
-      if (!(w > 0.0 && b > bottom && b * p.k < 1.0 - krijt_break_margin)) break;  // b < top
+      if (!(w > 0.0 && b > bottom && b * p.k < 1.0 - krijt_break_margin)) return std::nullopt;  // b < top
       const double db = 4.0 * a * w_over_a - w_over_a * w_over_a * scale;
       const CrackSpeed f = speed(b);
       const double slope = 1.0 - hc * f.derivative * db, r = a - base - hc * f.value;
       descending = descending && r > 0.0 && concave(b);
-      if (!(slope >= 1.0) && !(descending && slope > 0.0)) {
-        if (from_old || i > 0) break;
-        from_old = descending = true;  // the run-away branch from the guess: from a_old instead
-        a = a_old;
-        i = -1;
-        continue;
-      }
+      if (!(slope >= 1.0) && !(descending && slope > 0.0)) return std::nullopt;
       const double step = r / slope;
       if (i == 0) residual_old = r;
-      if (descending && a > meeting && a - step <= meeting && !concave(beta(meeting))) break;
+      if (descending && a > meeting && a - step <= meeting && !concave(beta(meeting))) return std::nullopt;
       a -= step;
-      if (!(a > 0.0)) break;
+      if (!(a > 0.0)) return std::nullopt;
       if (std::abs(step) <= 1e-4 * a) {
         const bool connected = from_old ? (residual_old <= 0.0) == (a >= a_old) : std::abs(a - a_old) <= 0.25 * a_old;
-        if (connected) return {a, false};
-        break;
+        return connected ? std::optional<double>(a) : std::nullopt;
       }
     }
-  }
+    return std::nullopt;
+  };
+  const bool from_guess = guess > 0.0 && guess != a_old && std::abs(guess - a_old) < 0.1 * a_old;
+  if (const auto root = from_guess ? newton(false) : std::nullopt) return {*root, false};
+  if (const auto root = newton(true)) return {*root, false};
 
   const auto tolerance = boost::math::tools::eps_tolerance<double>(50);
   std::uintmax_t iterations = 200;
@@ -338,7 +335,7 @@ class KrijtContact final : public CrackContactLaw {
     // (6 % in a at the last step before K13's run-away at t_H/100, for micrometre ice): such a
     // step is taken again as 16 steps, the overlap moving linearly between its two ends. Fast:
     // after a uniform step, BDF2's local error (2/11) |a - a_p| (Milne's device: a_p the
-    // quadratic predictor, whose error is -11/2 times BDF2's) above `tolerance` a; after any
+    // quadratic predictor, whose error is -9/2 times BDF2's) above `tolerance` a; after any
     // other step (the first after forming) a moved by more than 2 %; or the step broke the
     // contact. (A 2 % rule everywhere divided 30 % of the steps of a collision at 5 m/s, where a
     // moves 2-3 % a step smoothly; (error / tolerance)^{1/3} steps instead of 16 took the
@@ -405,7 +402,7 @@ class KrijtContact final : public CrackContactLaw {
         uniform ? bdf2_crack_step(p, s.contact_radius, delta, dt, s.previous_radius, ratio, guess, speed_)
                 : implicit_crack_step(p, s.contact_radius, s.contact_radius, delta, dt, s.contact_radius, speed_);
     const double a_old = s.contact_radius, a_new = step.broken ? 0.0 : step.contact_radius;
-    s.older_radius = uniform ? s.previous_radius : 0.0;
+    s.older_radius = dt == s.previous_step ? s.previous_radius : 0.0;  // for the predictor
     s.previous_radius = a_old;
     s.previous_step = dt;
     s.contact_radius = a_new;

@@ -59,8 +59,8 @@ bool crack_speed_concave(double beta, double k);
 /// Boost's cardinal interpolators take a uniform grid, on which the power at x -> 0 would need
 /// ~1e6 nodes, or a log per evaluation. The error of a cubic Hermite cell of relative width
 /// 1/32 on x^p is (1/32)^4 |p (p-1) (p-2) (p-3)| / 384 = 5.4e-10 of f for p = 1.116: measured,
-/// f within 6e-10 and f' within 6e-8 (test_crack.cpp). In a crack step that moves a by at
-/// most 2 % this moves a by < 2e-11 a, against Newton's stop at 1e-4 a.
+/// f within 6e-10 and f' within 6e-8 (test_crack.cpp). A crack step's change of a moves by
+/// 6e-10 of itself, ~1e-11 a, against Newton's stop at 1e-4 a.
 class CrackSpeedTable {
  public:
   explicit CrackSpeedTable(double k);

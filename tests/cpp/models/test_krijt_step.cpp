@@ -4,6 +4,7 @@
 // engine (its COR error is below 1e-8).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
@@ -102,48 +103,63 @@ TEST(KrijtStep, FastCrackLandsOnTheJkrBranch) {
 // before it: Newton's descent on the convex residual (docs/lammps.md, K13's contact in LAMMPS,
 // item 1) lands on the root connected to a_old, which a scan of the residual down from a_old in
 // steps of 1e-5 a_old and a bisection find independently; or, where that scan meets beta >= 1/k
-// first, on none (the neck breaks). Newton stops at a correction below 1e-4 a, so its error is
-// ~(1e-4)^2 a; the bound, 1e-6, also covers the scan's bisection (1e-12 a).
+// first, on none (the neck breaks). By backward Euler from a_old, and by BDF2 (a DEM's usual
+// step, a_older 2 % above a_old) from its own guess and from guesses on either side of a_old
+// (a guess above the meeting point whose iterates cross it must not end in a false break).
+// Newton stops at a correction below 1e-4 a, so its error is ~(1e-4)^2 a; the bound, 1e-6,
+// also covers the scan's bisection (1e-12 a).
 TEST(KrijtStep, NewtonFindsTheConnectedRootOfARunningAwayNeck) {
   const Case c = krijt_case(1e-12, 6.0);
   const models::KrijtParameters& p = c.model.dynamic_contact->parameters;
   const double top = (1.0 - models::krijt_break_margin) / p.k, bottom = p.k * (1.0 + 1e-12);
   int roots = 0, breaks = 0;
-  for (double delta : {-1e-9, -2e-9, -3e-9, -3.7e-9}) {
+  for (double delta : {-1e-9, -2e-9, -3e-9, -3.7e-9, -4.34866e-9}) {
     const double meeting = std::sqrt(-delta * p.effective_radius / 3.0);
-    for (double dt : {1e-12, 1e-11, 8e-11}) {
-      for (double ratio = 0.6; ratio <= 1.6; ratio += 0.05) {
-        const double a_old = ratio * meeting;
+    for (double dt : {1e-12, 1e-11, 5e-11, 8e-11}) {
+      for (double ratio = 0.6; ratio <= 1.6; ratio += 0.025) {
+        const double a_old = ratio * meeting, a_older = 1.02 * a_old;
         auto beta = [&](double a) { return models::effective_surface_energy_ratio(p, a, delta); };
-        auto residual = [&](double a) {
-          return a - a_old - dt * p.crack_speed_scale() * models::crack_speed_function(std::clamp(beta(a), bottom, top), p.k).value;
-        };
-        if (beta(a_old) <= 1.0 + 1e-4 || beta(a_old) >= 3.6 || residual(a_old) <= 0.0) continue;  // shrinking, (17)
-        SCOPED_TRACE(testing::Message() << "delta " << delta << " dt " << dt << " a_old/meeting " << ratio);
-        double hi = a_old, expected = -1.0;
-        for (double a = a_old * (1.0 - 1e-5); a > 1e-3 * a_old; a -= 1e-5 * a_old) {
-          if (beta(a) >= top) break;  // rising as a falls below the meeting point: broken
-          if (residual(a) <= 0.0) {
-            double lo = a;
-            while (hi - lo > 1e-12 * a_old) (residual(0.5 * (lo + hi)) <= 0.0 ? lo : hi) = 0.5 * (lo + hi);
-            expected = 0.5 * (lo + hi);
-            break;
+        // -1: backward Euler; 0: BDF2 from its own guess; else BDF2 from guess * a_old.
+        for (double guess : {-1.0, 0.0, 0.95, 0.99, 1.0078, 1.05}) {
+          const bool euler = guess < 0.0;
+          const double base = euler ? a_old : (4.0 * a_old - a_older) / 3.0, h = euler ? dt : 2.0 * dt / 3.0;
+          auto residual = [&](double a) {
+            return a - base - h * p.crack_speed_scale() *
+                                  models::crack_speed_function(std::clamp(beta(a), bottom, top), p.k).value;
+          };
+          if (beta(a_old) <= 1.0 + 1e-4 || beta(a_old) >= 3.6 || residual(a_old) <= 0.0) continue;  // shrinking, (17)
+          SCOPED_TRACE(testing::Message() << "delta " << delta << " dt " << dt << " a_old/meeting " << ratio
+                                          << " guess " << guess);
+          double hi = a_old, expected = -1.0;
+          for (double a = a_old * (1.0 - 1e-5); a > 1e-3 * a_old; a -= 1e-5 * a_old) {
+            if (beta(a) >= top) break;  // rising as a falls below the meeting point: broken
+            if (residual(a) <= 0.0) {
+              double lo = a;
+              while (hi - lo > 1e-12 * a_old) (residual(0.5 * (lo + hi)) <= 0.0 ? lo : hi) = 0.5 * (lo + hi);
+              expected = 0.5 * (lo + hi);
+              break;
+            }
+            hi = a;
           }
-          hi = a;
-        }
-        const models::CrackStep step = models::krijt_crack_step(p, a_old, delta, dt);
-        if (expected < 0.0) {
-          EXPECT_TRUE(step.broken);
-          breaks++;
-        } else {
-          ASSERT_FALSE(step.broken);
-          EXPECT_NEAR(step.contact_radius, expected, 1e-6 * expected);
-          roots++;
+          const models::CrackStep step =
+              euler ? models::krijt_crack_step(p, a_old, delta, dt)
+                    : models::krijt_crack_step(p, a_old, delta, dt, a_older, 1.0, guess * a_old);
+          if (expected < 0.0) {
+            EXPECT_TRUE(step.broken);
+            breaks++;
+          } else {
+            EXPECT_FALSE(step.broken);
+            if (!step.broken) {
+              EXPECT_NEAR(step.contact_radius, expected, 1e-6 * expected);
+            }
+            roots++;
+          }
         }
       }
     }
   }
   // The cases cover both outcomes, on both sides of the meeting point.
-  EXPECT_GT(roots, 20);
-  EXPECT_GT(breaks, 5);
+  EXPECT_GT(roots, 100);
+  EXPECT_GT(breaks, 20);
+  std::printf("%d roots, %d breaks\n", roots, breaks);
 }
