@@ -75,16 +75,23 @@ namespace {
 // What a crack step needs of K13 (14)-(16) at one contact (a DEM law keeps the parts that do not
 // depend on R, so that a step divides no more than it must).
 struct CrackConstants {
-  double radius = 0.0;  // R
-  double scale = 0.0;   // 2 pi R^2 gamma / E*: beta = (a^2 - delta R)^2 / (scale a), K13 (14)
-  double speed = 0.0;   // c of K13 (16)
+  double radius = 0.0;         // R
+  double scale_over_r2 = 0.0;  // 2 pi gamma / E*
+  double scale = 0.0;          // 2 pi R^2 gamma / E*: beta = (a^2 - delta R)^2 / (scale a), K13 (14)
+  double speed = 0.0;          // c of K13 (16)
   double k = 0.0;
 
   explicit CrackConstants(const KrijtParameters& p)
-      : CrackConstants(p.effective_radius, 2.0 * pi * p.surface_energy / p.effective_modulus, p.crack_speed_scale(),
-                       p.k) {}
-  CrackConstants(double r, double scale_over_r2, double c, double k_)
-      : radius(r), scale(scale_over_r2 * r * r), speed(c), k(k_) {}
+      : scale_over_r2(2.0 * pi * p.surface_energy / p.effective_modulus), speed(p.crack_speed_scale()), k(p.k) {
+    *this = at(p.effective_radius);
+  }
+  // The same at another R, without a division.
+  CrackConstants at(double r) const {
+    CrackConstants c = *this;
+    c.radius = r;
+    c.scale = scale_over_r2 * r * r;
+    return c;
+  }
 };
 
 // The implicit crack step a - base = h c f(beta(a, delta)) (backward Euler: base = a_old, h = dt;
@@ -314,7 +321,7 @@ class JkrViscoelasticContact final : public ContactLaw {
 class KrijtContact final : public CrackContactLaw {
  public:
   explicit KrijtContact(const KrijtParameters& p)
-      : p_(p), scale_over_r2_(2.0 * pi * p.surface_energy / p.effective_modulus), c_(p.crack_speed_scale()), speed_(p.k) {}
+      : p_(p), constants_(p), speed_(p.k) {}
   CrackState form(const ContactGeometry& g, double& dissipated) const override {  // K13 appendix B
     const KrijtParameters p = at(g);
     const double a0 = krijt_formation_radius(p);
@@ -323,7 +330,7 @@ class KrijtContact final : public CrackContactLaw {
   }
   CrackAdvance advance(const ContactGeometry& g, double before, double delta, double dt, CrackState& s,
                        Refinement refine) const override {
-    const CrackConstants p(g.effective_radius, scale_over_r2_, c_, p_.k);
+    const CrackConstants p = constants_.at(g.effective_radius);
     CrackState one = s;
     const CrackAdvance whole = step(p, before, delta, dt, one);
     if (refine == Refinement::none) {
@@ -425,7 +432,7 @@ class KrijtContact final : public CrackContactLaw {
     return p;
   }
   KrijtParameters p_;
-  double scale_over_r2_, c_;  // CrackConstants' parts that do not depend on R
+  CrackConstants constants_;  // at p_'s R; those of a contact at its own
   CrackSpeedTable speed_;     // K13 (16)/(17) at p_.k
 };
 
