@@ -73,18 +73,18 @@ void tangential(const models::DemModel& law, const models::ContactGeometry& g, c
    crack step of the whole would time it badly), and in the stretch where it breaks the break is
    found by bisection. The impulse up to there is the trapezoidal rule's on the stretches, less
    the F_{n-1} dt/2 the last step already gave and the force `owed` back; all the energy of the
-   contact at the break is the crack's. Returns whether it broke inside the step; where the
-   stretches hold it to the step's end, `held` is their end state. */
+   contact at the break is the crack's. `state` is the last step's (advance with
+   Refinement::unless_broken leaves it so). Returns whether it broke inside the step; where the
+   stretches hold it to the step's end, `state` becomes their end state. */
 template <class ForceAt>
 bool break_inside_step(const models::CrackContactLaw& crack, const models::ContactGeometry& g, double before,
                        double overlap, const StepSettings& s, const double* history, double owed, const ForceAt& force_at,
-                       ContactForce& out, models::CrackState& held) {
-  models::CrackState now{history[crack_state], history[crack_state + 1], history[crack_state + 2],
-                         history[crack_state + 3]};
+                       ContactForce& out, models::CrackState& state) {
+  models::CrackState now = state;
   const double f_last = history[last_force];
   auto overlap_at = [&](double theta) { return before + theta * (overlap - before); };
-  auto advance = [&](double from, double length, models::CrackState& state) {
-    return crack.advance(g, overlap_at(from), overlap_at(from + length), length * s.dt, state, models::Refinement::none);
+  auto advance = [&](double from, double length, models::CrackState& moved) {
+    return crack.advance(g, overlap_at(from), overlap_at(from + length), length * s.dt, moved, models::Refinement::none);
   };
   double impulse = 0.0, released = 0.0, theta = 0.0, f_from = f_last;
   constexpr double stretch = 1.0 / 16.0;
@@ -114,7 +114,7 @@ bool break_inside_step(const models::CrackContactLaw& crack, const models::Conta
     f_from = f_to;
     now = next;
   }
-  held = now;
+  state = now;
   return false;
 }
 
