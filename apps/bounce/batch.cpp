@@ -149,9 +149,9 @@ struct Mpi {
   ~Mpi() {
     if (started) MPI_Finalize();
   }
-  int max(int value) const {
+  int min(int value) const {
     int out = 0;
-    MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
     return out;
   }
   long sum(long value) const {
@@ -172,24 +172,43 @@ struct Mpi {
     return text;
   }
 #else
-  int max(int value) const { return value; }
+  int min(int value) const { return value; }
   long sum(long value) const { return value; }
 #endif
   Mpi(const Mpi&) = delete;
   Mpi& operator=(const Mpi&) = delete;
 };
 
-int code_of(const std::exception_ptr& e) {
+#ifdef BOUNCE_HAVE_MPI
+// An error as text that rank 0 raises again as the same kind, with the same fields, so that
+// an error met on another rank alone is printed and exits as it would have on rank 0.
+constexpr char field_end = '\0';
+
+std::string describe(const std::exception_ptr& e) {
   try {
     std::rethrow_exception(e);
-  } catch (const InvalidArgument&) {
-    return 2;
-  } catch (const NumericalError&) {
-    return 3;
+  } catch (const InvalidArgument& x) {
+    return fmt::format("i{}{}{}{}{}", x.parameter(), field_end, x.value(), field_end, x.allowed());
+  } catch (const NumericalError& x) {
+    return fmt::format("n{}", x.what());
+  } catch (const std::exception& x) {
+    return fmt::format("x{}", x.what());
   } catch (...) {
-    return 4;
+    return "xan unknown exception";
   }
 }
+
+std::exception_ptr revive(const std::string& text, int rank) {
+  const std::string body = text.substr(1);
+  if (text.front() == 'i') {
+    const auto a = body.find(field_end), b = body.find(field_end, a + 1);
+    return std::make_exception_ptr(InvalidArgument(body.substr(0, a), body.substr(a + 1, b - a - 1), body.substr(b + 1)));
+  }
+  const std::string where = fmt::format("{} (on MPI rank {})", body, rank);
+  if (text.front() == 'n') return std::make_exception_ptr(NumericalError(where));
+  return std::make_exception_ptr(std::runtime_error(where));
+}
+#endif
 
 struct Batch {
   std::vector<api::BatchEntry> entries;
@@ -245,11 +264,18 @@ BatchResult run_batch(const std::string& manifest, const std::optional<std::stri
   } catch (...) {
     error = std::current_exception();
   }
-  const int failed = mpi.max(error ? code_of(error) : 0);
-  if (failed != 0) {
-    if (error && mpi.rank == 0) std::rethrow_exception(error);
-    if (mpi.rank == 0) throw NumericalError("the batch failed on another rank (its message is above)");
-    result.exit_code = failed;
+  // The lowest rank that failed speaks for the batch, through rank 0: one message, whichever
+  // ranks met it. The other ranks return quietly with exit code 0: OpenMPI's mpirun ends the
+  // whole job as soon as one process exits non-zero, which could kill rank 0 before it has
+  // printed the message. The job's exit code is rank 0's.
+  const int first = mpi.min(error ? mpi.rank : mpi.size);
+  if (first < mpi.size) {
+#ifdef BOUNCE_HAVE_MPI
+    // No block has been sent yet, so tag 0 cannot meet one.
+    if (mpi.rank == first && first != 0) mpi.send(describe(error), 0);
+    if (mpi.rank == 0 && first != 0) error = revive(mpi.receive(first, 0), first);
+#endif
+    if (mpi.rank == 0) std::rethrow_exception(error);
     return result;
   }
   loaded = mpi.sum(loaded);

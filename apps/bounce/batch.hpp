@@ -12,14 +12,14 @@ namespace bounce::cli {
 
 struct BatchResult {
   Record record;        ///< {manifest, experiments: [fit Record with its name]}; rank 0's alone
-  bool printer = true;  ///< this process prints (rank 0)
-  int exit_code = 0;    ///< the other ranks' exit code when the batch failed (rank 0 raised)
+  bool printer = true;  ///< this process prints (rank 0); the others exit 0, quietly
 };
 
 /// Runs the batch on every rank (MPI_Init / MPI_Finalize inside when built with MPI). Rank 0
-/// raises the errors of every command (InvalidArgument naming the manifest's key, ...; an
-/// error met on another rank alone as a NumericalError quoting it); the other ranks stay
-/// quiet and return with printer = false and the exit code.
+/// raises the errors of every rank (InvalidArgument naming the manifest's key, ...; an error
+/// met on another rank alone is raised by rank 0 as the same kind, with the same message);
+/// the other ranks stay quiet and return with printer = false, so that mpirun's exit code is
+/// rank 0's.
 BatchResult run_batch(const std::string& manifest, const std::optional<std::string>& checkpoint, bool progress);
 
 }  // namespace bounce::cli

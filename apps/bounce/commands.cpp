@@ -212,7 +212,7 @@ int fit_batch(const Options& o, const std::string& manifest, const std::string* 
   }
   if (o.given("data")) throw InvalidArgument("data", o.typed("data"), "none with --batch (the manifest names the data)");
   const BatchResult r = run_batch(manifest, o.given("checkpoint") ? std::optional(*checkpoint) : std::nullopt, progress);
-  if (!r.printer) return r.exit_code;
+  if (!r.printer) return 0;  // rank 0 prints, and raised any error
   if (json) {
     print_json(r.record);
   } else {

@@ -92,7 +92,25 @@ def test_bad_manifest_is_one_error_line(tmp_path):
     manifest = _manifest(tmp_path, 8)
     manifest.write_text(manifest.read_text().replace("radius = 1e-2", "radius = -1"))
     r = subprocess.run(_mpirun(2, "--batch", str(manifest)), capture_output=True, text=True, env=MPI_ENV)
-    assert r.returncode != 0
+    assert r.returncode == 2
     assert r.stdout == ""
-    lines = [l for l in r.stderr.splitlines() if l.startswith("bounce: error:")]
+    lines = [l for l in r.stderr.splitlines() if l.startswith("bounce:")]
     assert lines == [f"bounce: error: {manifest}: bridges ice: radius = -1 is invalid: expected radius [m] > 0 and finite"]
+
+
+@needs_mpirun
+def test_error_on_another_rank_alone_is_printed_by_rank_0(tmp_path):
+    # A damaged checkpoint block of unit 1 (the bridges' points 60-119), which rank 1 of 2 reads
+    # and rank 0 never sees: rank 0 prints rank 1's error as its own, once, and exits with its code.
+    manifest = _manifest(tmp_path, 8)
+    checkpoint = tmp_path / "ck"
+    checkpoint.mkdir()
+    damaged = checkpoint / "experiment-1-points-60.block"
+    damaged.write_text("not a block\n")
+    r = subprocess.run(_mpirun(2, "--batch", str(manifest), "--checkpoint", str(checkpoint)), capture_output=True,
+                       text=True, env=MPI_ENV)
+    assert r.returncode == 2
+    assert r.stdout == ""
+    lines = [l for l in r.stderr.splitlines() if l.startswith("bounce:")]
+    assert lines == [f"bounce: error: --checkpoint = {damaged} is invalid: expected a block of this manifest's fits "
+                     "(the manifest or its data changed: use an empty directory)"]
