@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -50,10 +52,10 @@ struct Case {
   double t_hertz;
 };
 
-Case krijt_case(double tvis, double speed) {
+Case krijt_case(double tvis, double speed, double k = 0.02) {
   const Material ice = MaterialTable::builtin().at("water-ice");
   Pair pair(sphere(ice, 1e-6), sphere(ice, 1e-6));
-  models::Model model = models::make_model(pair, "krijt", {{"tvis", tvis}});
+  models::Model model = models::make_model(pair, "krijt", {{"tvis", tvis}, {"k", k}});
   const double rho = hertz_constant(pair.effective_modulus(), pair.effective_radius());
   const double t_hertz = 2.94 * std::pow(1.25 * pair.effective_mass() / rho, 0.4) * std::pow(speed, -0.2);  // BP04 (8.29)
   return {pair, model, t_hertz};
@@ -162,4 +164,90 @@ TEST(KrijtStep, NewtonFindsTheConnectedRootOfARunningAwayNeck) {
   EXPECT_GT(roots, 100);
   EXPECT_GT(breaks, 20);
   std::printf("%d roots, %d breaks\n", roots, breaks);
+}
+
+// Far from the meeting point and with beta up to 1/k (where f is not concave and Newton gives way
+// to the search), for k = 0.02 and for k = 0.1 and 0.5 (K13 (16) alone, nearly a step at beta =
+// 1): the crack step (docs/lammps.md, K13's contact in LAMMPS) against a scan of the residual
+// down from a_old in steps of 1e-4 a_old, the first a where it is <= 0 with beta < 1/k (a root),
+// or beta >= 1/k rising as a falls first (broken). Before, this test failed 38 checks: the
+// geometric march that the walk replaced reported 36 false breaks, at roots 25-70 % below a_old
+// that its samples stepped over; and for k = 0.1 and 0.5 Newton, stopping at a correction below
+// 1e-4 a, ended on the ramp at beta = 1 up to 2e-3 a from the root (now: a residual below 1e-6 a).
+namespace {
+
+struct Tally {
+  int roots = 0, breaks = 0;
+};
+
+// One backward-Euler crack step of a shrinking neck (the residual positive at a_old) against the
+// scan; a growing one is skipped.
+void check_shrinking_step(const models::KrijtParameters& p, double delta, double dt, double a_old, Tally& tally) {
+  const double top = (1.0 - models::krijt_break_margin) / p.k, bottom = p.k * (1.0 + 1e-12);
+  auto beta = [&](double a) { return models::effective_surface_energy_ratio(p, a, delta); };
+  auto residual = [&](double a) {
+    return a - a_old - dt * p.crack_speed_scale() * models::crack_speed_function(std::clamp(beta(a), bottom, top), p.k).value;
+  };
+  if (beta(a_old) >= top || residual(a_old) <= 0.0) return;  // broken, or growing
+  double hi = a_old, expected = -1.0, beta_above = beta(a_old);
+  for (double a = a_old * (1.0 - 1e-4); a > 1e-2 * a_old; a -= 1e-4 * a_old) {
+    const double b = beta(a);
+    if (b >= top && b >= beta_above) break;
+    if (b < top && residual(a) <= 0.0) {
+      double lo = a;
+      while (hi - lo > 1e-13 * a_old) (residual(0.5 * (lo + hi)) <= 0.0 ? lo : hi) = 0.5 * (lo + hi);
+      expected = 0.5 * (lo + hi);
+      break;
+    }
+    hi = a;
+    beta_above = b;
+  }
+  const models::CrackStep step = models::krijt_crack_step(p, a_old, delta, dt);
+  if (expected < 0.0) {
+    EXPECT_TRUE(step.broken);
+    tally.breaks++;
+  } else {
+    EXPECT_FALSE(step.broken);
+    if (!step.broken) {
+      EXPECT_NEAR(step.contact_radius, expected, 1e-6 * expected);  // the scan's step
+    }
+    tally.roots++;
+  }
+}
+
+}  // namespace
+
+TEST(KrijtStep, TheShrinkingSearchFindsTheConnectedRootOrTheBreak) {
+  auto state = [](double k, double tvis, double fraction) {
+    const Case c = krijt_case(tvis, 6.0, k);
+    const double delta = fraction * models::krijt_release_overlap(c.model.dynamic_contact->parameters);
+    return std::tuple{c, delta, std::sqrt(-delta * c.model.dynamic_contact->parameters.effective_radius / 3.0)};
+  };
+  Tally tally;
+  for (const auto& [k, tvis] : {std::pair{0.02, 1e-13}, {0.02, 1e-12}, {0.1, 1e-12}, {0.5, 1e-12}}) {
+    for (double fraction = 0.05; fraction <= 1.0001; fraction += 0.05) {
+      const auto [c, delta, meeting] = state(k, tvis, fraction);
+      for (double dt : {1e-13, 1e-12, 1e-11, 8e-11}) {
+        for (double ratio = 0.5; ratio <= 4.0; ratio *= 1.05) {
+          SCOPED_TRACE(testing::Message() << "k " << k << " T_vis " << tvis << " delta " << delta << " dt " << dt
+                                          << " a_old/meeting " << ratio);
+          check_shrinking_step(c.model.dynamic_contact->parameters, delta, dt, ratio * meeting, tally);
+        }
+      }
+    }
+  }
+  EXPECT_GT(tally.roots, 1000);
+  EXPECT_GT(tally.breaks, 1000);
+  // States a denser grid found (a_old = 0.5 * 1.013^n of the meeting point): a dip 1 % of a_old
+  // wide, 60 % below a_old (k = 0.1), and Newton on the ramp at beta = 1 (k = 0.5, 0.1).
+  const std::tuple<double, double, double, double, int> found[] = {
+      {0.1, 1e-12, 0.35, 8e-11, 106}, {0.5, 1e-12, 0.45, 8e-11, 115}, {0.1, 1e-14, 0.2, 8e-11, 103}};
+  for (const auto& [k, tvis, fraction, dt, n] : found) {
+    SCOPED_TRACE(testing::Message() << "k " << k << " T_vis " << tvis << " fraction " << fraction << " n " << n);
+    const auto [c, delta, meeting] = state(k, tvis, fraction);
+    const Tally before = tally;
+    check_shrinking_step(c.model.dynamic_contact->parameters, delta, dt, 0.5 * std::pow(1.013, n) * meeting, tally);
+    EXPECT_EQ(tally.roots, before.roots + 1);  // each holds a root: the neck shrinks and holds
+  }
+  std::printf("%d roots, %d breaks\n", tally.roots, tally.breaks);
 }
