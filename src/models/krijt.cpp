@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string_view>
 #include <numbers>
 #include <optional>
@@ -140,7 +141,8 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
   // ramp takes a correction far below 1e-4 a while the residual stays at a few per cent of a, the
   // root lying beyond the ramp (a test grid had iterates stop 2e-3 a from it, k = 0.5). For such
   // k an iterate is final where its residual is below 1e-6 a: where the residual's slope is >= 1
-  // on the way to the root (beta rising with a), the root is then within 1e-6 a of it.
+  // on the way to the root (beta rising with a), the root is then within 1e-6 a of the iterate
+  // the step starts from, and the step is smaller still; or where the step is a few ulps.
   const bool steep_near_one = p.k != 0.02;
   auto newton = [&](bool from_old) -> std::optional<double> {
     // beta = w^2 / (scale a), w = a^2 - delta R (K13 (14)); d beta / da = (4 a^2 w - w^2) / (scale a^2).
@@ -160,7 +162,9 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
       if (descending && a > meeting && a - step <= meeting && !concave(beta(meeting))) return std::nullopt;
       a -= step;
       if (!(a > 0.0)) return std::nullopt;
-      if (steep_near_one ? std::abs(r) <= 1e-6 * a : std::abs(step) <= 1e-4 * a) {
+      // A residual of 1e-6 a can be below what a's ulp times a steep slope gives: then a few ulps.
+      const double eps = std::numeric_limits<double>::epsilon();
+      if (steep_near_one ? std::abs(r) <= 1e-6 * a || std::abs(step) <= 4.0 * eps * a : std::abs(step) <= 1e-4 * a) {
         const bool connected = from_old ? (residual_old <= 0.0) == (a >= a_old) : std::abs(a - a_old) <= 0.25 * a_old;
         return connected ? std::optional<double>(a) : std::nullopt;
       }
@@ -190,8 +194,20 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
     const auto [x0, x1] = boost::math::tools::toms748_solve(residual, lo, hi, tolerance, limit);
     return CrackStep{0.5 * (x0 + x1), false};
   };
-  if (a_old > meeting && residual(meeting) <= 0.0) return solve(meeting, a_old);
-  if (!(delta_r < 0.0)) return {0.0, true};  // not met: the residual is -a_old - ... < 0 at a = 0
+  auto over_top = [&](double a) { return beta(a) - top; };
+  if (delta_r < 0.0 && over_top(meeting) >= 0.0) return {0.0, true};  // beta >= 1/k at its least
+  if (a_old > meeting && residual(meeting) <= 0.0) {
+    // A root where beta >= 1/k is none: the crack runs at a speed without bound there (the
+    // residual's f is clamped at (1 - 1e-6)/k), so the neck shrinks to where beta = 1/k, or below.
+    double upper = a_old;
+    if (over_top(a_old) >= 0.0) {
+      std::uintmax_t limit = 200;
+      upper = boost::math::tools::toms748_solve(over_top, meeting, a_old, tolerance, limit).first;  // beta < top
+      if (residual(upper) <= 0.0) return {upper, false};
+    }
+    return solve(meeting, upper);
+  }
+  if (!(delta_r < 0.0)) return {0.0, true};  // r(0) = -base - h c f(~k) < 0 (f -> +inf at k): not met
   // Below the meeting point beta rises as a falls, to 1/k at a_break, and the residual can dip
   // below zero and come back (beta's rise against a's fall). But it falls no faster than a:
   // r(a - d) >= r(a) - d, since its term -h c f(beta(a)) only grows as a falls (beta rises, f
@@ -202,14 +218,14 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
   // between two of the walk's points is not seen: none was in 8163 states of a test grid and
   // 94 896 of a denser one, against scans in steps of 1e-4 a_old and 1e-5 a_old.
   const double a_top = std::min(a_old, meeting);
-  auto over_top = [&](double a) { return beta(a) - top; };
   if (over_top(a_top) >= 0.0) return {0.0, true};
   double a_low = 0.5 * a_top;
   while (over_top(a_low) < 0.0) a_low *= 0.5;  // beta ~ (delta R)^2 / (scale a) as a -> 0
   std::uintmax_t limit = 200;
   // The least a with beta < 1/k (the bracket's upper end).
   const double a_break = boost::math::tools::toms748_solve(over_top, a_low, a_top, tolerance, limit).second;
-  const double spacing = (a_top - a_break) / 32.0;
+  // (At least a few ulps, so that every pass moves a.)
+  const double spacing = std::max((a_top - a_break) / 32.0, 4.0 * std::numeric_limits<double>::epsilon() * a_top);
   double a = a_top, r = residual(a_top);  // r > 0 at a_top (a_old, or the meeting point)
   while (a - r > a_break) {
     if (r >= spacing) {
@@ -219,7 +235,7 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
       continue;
     }
     const double next = std::max(a - spacing, a_break), r_next = residual(next);
-    if (r_next <= 0.0) return solve(next, a);
+    if (r_next <= 0.0) return solve(next, a);  // two roots within one 1/32: the one toms748 meets
     a = next;
     r = r_next;
   }
