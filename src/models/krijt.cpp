@@ -176,12 +176,15 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
   if (const auto root = newton(true)) return {*root, false};
 
   const auto tolerance = boost::math::tools::eps_tolerance<double>(50);
-  std::uintmax_t iterations = 200;
+  const auto solve = [&](double lo, double hi) {  // a root of the residual bracketed by [lo, hi]
+    std::uintmax_t limit = 200;
+    const auto [x0, x1] = boost::math::tools::toms748_solve(residual, lo, hi, tolerance, limit);
+    return CrackStep{0.5 * (x0 + x1), false};
+  };
   if (residual(a_old) <= 0.0) {  // the contact grows: the residual increases above a_old
     double hi = 2.0 * a_old;
     while (residual(hi) <= 0.0) hi *= 2.0;
-    const auto [x0, x1] = boost::math::tools::toms748_solve(residual, a_old, hi, tolerance, iterations);
-    return {0.5 * (x0 + x1), false};
+    return solve(a_old, hi);
   }
   // It shrinks: the root is the largest a below a_old where the residual is <= 0, with beta < 1/k
   // on the way (where beta >= 1/k the crack would open at a speed without bound; K13's run-away
@@ -189,11 +192,6 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
   // with beta (tested on a dense grid for k from 1e-9 to 0.99: CrackLaw.NeverIncreasesWithBeta),
   // so on the branch where beta rises with a (a > the meeting point; every a > 0 where delta >= 0)
   // the residual rises with a: one root at most there, found from a sign change.
-  const auto solve = [&](double lo, double hi) {
-    std::uintmax_t limit = 200;
-    const auto [x0, x1] = boost::math::tools::toms748_solve(residual, lo, hi, tolerance, limit);
-    return CrackStep{0.5 * (x0 + x1), false};
-  };
   auto over_top = [&](double a) { return beta(a) - top; };
   if (delta_r < 0.0 && over_top(meeting) >= 0.0) return {0.0, true};  // beta >= 1/k at its least
   if (a_old > meeting && residual(meeting) <= 0.0) {
