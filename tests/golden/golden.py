@@ -97,7 +97,7 @@ def _json_difference(got, want, tolerance, path=""):
         return None
     if isinstance(want, float) and isinstance(got, float):
         allowed = _fitted_tolerance(path, tolerance)
-        if abs(got - want) <= allowed * max(abs(got), abs(want)):
+        if numbers_agree(repr(got), repr(want), allowed):
             return None
         return f"{path}: number {got!r} differs from the recorded {want!r} beyond {allowed:g}"
     if isinstance(want, int) and isinstance(got, int) and not isinstance(want, bool):
