@@ -7,7 +7,8 @@
    `bounce lammps` prints; LAMMPS's own timer of the Pair section per step and contact;
 2. krijt (K13's crack law) against the plugin's viscoelastic law with the same A, on a dense gas
    of micrometre water-ice grains whose contacts stick and persist, and on a gas of colliding
-   ones whose contacts form and break (the Pair section per step and contact);
+   ones whose contacts form and break (the Pair section per step and contact); both again with
+   the crack constant k = 0.1 and 0.5 instead of K13's 0.02;
 3. strong scaling: 103 823 grains on 1 and 2 ranks (loop time).
 
     /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR]      (after make lammps)
@@ -82,15 +83,15 @@ def per_contact():
               f"whole loop {loop:.2f} s (x{loop / base[1]:.2f})")
 
 
-def krijt_against_viscoelastic(title, phi, speed, dt, steps):
-    """krijt (T_vis = 1e-12 s) against viscoelastic with A = T_vis / nu^2 (K13 after (18)) on a gas
-    of 1 um water-ice grains (K13 table 2) at volume fraction `phi` and rms `speed`, the same skin
-    for both (krijt's neck reaches 37 nm beyond touching); the Pair section per step and contact,
-    the fastest of three interleaved runs."""
+def krijt_against_viscoelastic(title, phi, speed, dt, steps, k=0.02):
+    """krijt (T_vis = 1e-12 s, crack constant `k`) against viscoelastic with A = T_vis / nu^2 (K13
+    after (18)) on a gas of 1 um water-ice grains (K13 table 2) at volume fraction `phi` and rms
+    `speed`, the same skin for both (krijt's neck reaches 37 nm beyond touching); the Pair section
+    per step and contact, the fastest of three interleaved runs."""
     tvis, radius = 1e-12, 1e-6
     ice = "material water-ice"
     styles = [("pair_style bounce viscoelastic, A = T_vis/nu^2", f"viscoelastic {ice} A {tvis / 0.25 ** 2!r}"),
-              ("pair_style bounce krijt, T_vis = 1e-12 s", f"krijt {ice} tvis {tvis!r}")]
+              (f"pair_style bounce krijt, T_vis = 1e-12 s, k = {k}", f"krijt {ice} tvis {tvis!r} k {k!r}")]
     extra = "compute touch all contact/atom\ncompute total all reduce sum c_touch\nthermo_style custom step c_ke c_total"
     cells = 22
     best = {}
@@ -113,18 +114,27 @@ def krijt_against_viscoelastic(title, phi, speed, dt, steps):
         print(f"  {label:50s} {per * 1e9:6.1f} ns/contact ({2 * c / n:.3f} contacts/grain): x{per / base:.2f}")
 
 
-def krijt_cost():
+def krijt_cost(k=0.02):
     """Contacts that hold: the grains on a simple cubic lattice pressed 2 nm into each other (volume
     fraction 0.525), at 1 m/s rms, below the sticking velocity (1.9 m/s at T_vis = 1e-12 s): six
     contacts a grain that hold, and some that open and close; dt = t_H/100 at 1 m/s."""
-    krijt_against_viscoelastic("in contact", phi=0.525, speed=1.0, dt=1.1e-10, steps=1000)
+    krijt_against_viscoelastic("in contact", phi=0.525, speed=1.0, dt=1.1e-10, steps=1000, k=k)
 
 
-def krijt_gas_cost():
+def krijt_gas_cost(k=0.02):
     """Contacts that form and break all the time (krijt's formation and break cost more than its
     steps): volume fraction 0.3, rms speed 5 m/s (2.7 times the sticking velocity, so that most
     collisions bounce), dt = 6e-11 s (t_H/100 at 5 m/s)."""
-    krijt_against_viscoelastic("colliding", phi=0.3, speed=5.0, dt=6e-11, steps=3000)
+    krijt_against_viscoelastic("colliding", phi=0.3, speed=5.0, dt=6e-11, steps=3000, k=k)
+
+
+def krijt_other_k_cost():
+    """Both gases with k = 0.1 and 0.5, where the crack step's Newton stops on a residual below
+    1e-6 a instead of a correction below 1e-4 a ((16) is nearly a step at beta = 1 there, see
+    src/models/krijt.cpp): about five times the crack-law evaluations a step (docs/benchmarks.md)."""
+    for k in (0.1, 0.5):
+        krijt_cost(k)
+        krijt_gas_cost(k)
 
 
 def scaling():
@@ -149,5 +159,6 @@ if __name__ == "__main__":
     per_contact()
     krijt_cost()
     krijt_gas_cost()
+    krijt_other_k_cost()
     scaling()
     print(f"({time.time() - start:.0f} s)")
