@@ -43,7 +43,7 @@ for target in "$@"; do
   # 60 s here is a timeout, a hang if it also takes more than 10 s in the normal build. Slower
   # units below that are not findings, so libFuzzer's slow-unit reports (by default at 10 s,
   # written as artifacts) start at the timeout too: a collision that ends on the integrator's
-  # step budget takes 0.5-0.8 s in the normal build and, sanitized on a loaded machine, over 10 s.
+  # step budget takes 0.4-0.8 s in the normal build and, sanitized on a loaded machine, over 10 s.
   options=(-max_total_time="$seconds" -timeout=60 -report_slow_units=60 -rss_limit_mb=2048 -print_final_stats=1
            -artifact_prefix="$artifacts/")
   [ -f "$here/$target.dict" ] && options+=(-dict="$here/$target.dict")
