@@ -176,9 +176,12 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
   if (const auto root = newton(true)) return {*root, false};
 
   const auto tolerance = boost::math::tools::eps_tolerance<double>(50);
-  const auto solve = [&](double lo, double hi) {  // a root of the residual bracketed by [lo, hi]
+  const auto bracket = [&](const auto& fn, double lo, double hi) {  // a root of fn bracketed by [lo, hi], narrowed
     std::uintmax_t limit = 200;
-    const auto [x0, x1] = boost::math::tools::toms748_solve(residual, lo, hi, tolerance, limit);
+    return boost::math::tools::toms748_solve(fn, lo, hi, tolerance, limit);
+  };
+  const auto solve = [&](double lo, double hi) {  // a root of the residual bracketed by [lo, hi]
+    const auto [x0, x1] = bracket(residual, lo, hi);
     return CrackStep{0.5 * (x0 + x1), false};
   };
   if (residual(a_old) <= 0.0) {  // the contact grows: the residual increases above a_old
@@ -199,8 +202,7 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
     // residual's f is clamped at (1 - 1e-6)/k), so the neck shrinks to where beta = 1/k, or below.
     double upper = a_old;
     if (over_top(a_old) >= 0.0) {
-      std::uintmax_t limit = 200;
-      upper = boost::math::tools::toms748_solve(over_top, meeting, a_old, tolerance, limit).first;  // beta < top
+      upper = bracket(over_top, meeting, a_old).first;  // beta < top
       if (residual(upper) <= 0.0) return {upper, false};
     }
     return solve(meeting, upper);
@@ -219,9 +221,8 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
   if (over_top(a_top) >= 0.0) return {0.0, true};
   double a_low = 0.5 * a_top;
   while (over_top(a_low) < 0.0) a_low *= 0.5;  // beta ~ (delta R)^2 / (scale a) as a -> 0
-  std::uintmax_t limit = 200;
   // The least a with beta < 1/k (the bracket's upper end).
-  const double a_break = boost::math::tools::toms748_solve(over_top, a_low, a_top, tolerance, limit).second;
+  const double a_break = bracket(over_top, a_low, a_top).second;
   // (At least a few ulps, so that every pass moves a.)
   const double spacing = std::max((a_top - a_break) / 32.0, 4.0 * std::numeric_limits<double>::epsilon() * a_top);
   double a = a_top, r = residual(a_top);  // r > 0 at a_top (a_old, or the meeting point)
