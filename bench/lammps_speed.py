@@ -129,9 +129,8 @@ def krijt_gas_cost(k=0.02):
 
 
 def krijt_other_k_cost():
-    """Both gases with k = 0.1 and 0.5, where the crack step's Newton stops on a residual below
-    1e-6 a instead of a correction below 1e-4 a ((16) is nearly a step at beta = 1 there, see
-    src/models/krijt.cpp): about five times the crack-law evaluations a step (docs/benchmarks.md)."""
+    """Both gases with k = 0.1 and 0.5: the crack law carried to any k (docs/adhesive.md) costs
+    what it costs at K13's k = 0.02 (docs/benchmarks.md)."""
     for k in (0.1, 0.5):
         krijt_cost(k)
         krijt_gas_cost(k)

@@ -14,6 +14,7 @@ ParameterSpec relaxation_time();       ///< tvis [s]
 ParameterSpec dissipative_constant_b();  ///< B [s] of BP04 (8.57)
 // Adhesion (K13's crack law and the Tabor parameter).
 ParameterSpec z0();  ///< equilibrium separation [m]
+ParameterSpec krijt_z0();  ///< the same, over the range krijt's crack law is tested on
 ParameterSpec k();   ///< relaxed / instantaneous modulus
 // BP04 (8.63).
 ParameterSpec power_d1();

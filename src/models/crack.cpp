@@ -54,8 +54,10 @@ CrackSpeed blend(const CrackSpeed& from, const CrackSpeed& to, double s, double 
 namespace {
 constexpr double low_band_bottom = 0.31, low_band_top = 3.6;  // where (17) holds alone
 
-CrackSpeed crack_speed_piecewise(double beta, double k) {
-  if (k != 0.02) return crack_speed_high(beta, k);
+// The reference law, K13's at its k = 0.02: (17) on [0.31, 3.6], (16) outside [0.29, 3.7], C1
+// blends between.
+CrackSpeed reference_piecewise(double beta) {
+  constexpr double k = crack_reference_k;
   if (beta <= 0.29 || beta >= 3.7) return crack_speed_high(beta, k);
   if (beta >= low_band_bottom && beta <= low_band_top) return crack_speed_low(beta);
   if (beta < 0.31) return blend(crack_speed_high(beta, k), crack_speed_low(beta), (beta - 0.29) / 0.02, 1.0 / 0.02);
@@ -67,10 +69,10 @@ CrackSpeed crack_speed_piecewise(double beta, double k) {
 struct Jet {
   double f, d1, d2;
 };
-Jet jet(double beta, double k) {
+Jet jet(double beta) {
   const double h = 1e-3 * crack_smoothing_width;
-  const CrackSpeed c = crack_speed_piecewise(beta, k);
-  const double d2 = (crack_speed_piecewise(beta + h, k).derivative - crack_speed_piecewise(beta - h, k).derivative) / (2 * h);
+  const CrackSpeed c = reference_piecewise(beta);
+  const double d2 = (reference_piecewise(beta + h).derivative - reference_piecewise(beta - h).derivative) / (2 * h);
   return {c.value, c.derivative, d2};
 }
 
@@ -97,24 +99,42 @@ CrackSpeed join(const Jet& a, const Jet& b, double x0, double x1, double x) {
   const CrackSpeed q = hermite(t);
   return {q.value + c * u * u * u, (q.derivative + c * 3.0 * u * u * (1.0 - 2.0 * t)) / h};
 }
-}  // namespace
-
-CrackSpeed crack_speed_function(double beta, double k) {
+// The reference law with the join around beta = 1; the jets at the join's edges computed once.
+CrackSpeed reference_law(double beta) {
   const double w = crack_smoothing_width;
-  if (std::abs(beta - 1.0) >= w) return crack_speed_piecewise(beta, k);
-  // The edge jets depend on k only: computed once per k and thread.
-  thread_local double cached_k = -1.0;
-  thread_local Jet below{}, above{};
-  if (k != cached_k) {
-    below = jet(1.0 - w, k);
-    above = jet(1.0 + w, k);
-    cached_k = k;
-  }
+  if (std::abs(beta - 1.0) >= w) return reference_piecewise(beta);
+  static const Jet below = jet(1.0 - w), above = jet(1.0 + w);
   return join(below, above, 1.0 - w, 1.0 + w, beta);
 }
 
-bool crack_speed_concave(double beta, double k) {  // K13 (17)
-  return k == 0.02 && beta >= 1.0 + crack_smoothing_width && beta <= low_band_top;
+}  // namespace
+
+CrackBeta reference_beta(double beta, double k) {
+  // y = (1 - beta) / (1 - k) below 1, (1 - 1/beta) / (1 - k) above, is the same at k and at the
+  // reference k: c = (1 - k_ref) / (1 - k) carries 1 - beta (or 1 - 1/beta) from one to the other.
+  const double c = (1.0 - crack_reference_k) / (1.0 - k);
+  if (beta <= 1.0) return {1.0 - c * (1.0 - beta), c};
+  const double u = 1.0 - c * (1.0 - 1.0 / beta), beta_ref = 1.0 / u;
+  return {beta_ref, c};
+}
+
+CrackSpeed crack_speed_at_k(const CrackSpeed& f, double beta, const CrackBeta& r) {
+  // Below 1: f = (b_r / b) f_r(b_r), b_r = 1 - c (1 - b): df/db = ((c - 1)/b^2) f_r + (b_r/b) c f_r'.
+  // Above 1: f = (b / b_r) f_r(b_r), 1/b_r = 1 - c (1 - 1/b): df/db = (1 - c) f_r + c (b_r/b) f_r'.
+  const double c = r.c, ratio = r.beta / beta;
+  if (beta <= 1.0) return {ratio * f.value, (c - 1.0) / (beta * beta) * f.value + ratio * c * f.derivative};
+  return {f.value / ratio, (1.0 - c) * f.value + c * ratio * f.derivative};
+}
+
+CrackSpeed crack_speed_function(double beta, double k) {  // K13 (16)-(17) at any k
+  const CrackBeta r = reference_beta(beta, k);
+  return crack_speed_at_k(reference_law(r.beta), beta, r);
+}
+
+bool crack_speed_concave(double beta, double k) {  // K13 (17), carried to k
+  if (!(beta > 1.0)) return false;
+  const double beta_ref = reference_beta(beta, k).beta;
+  return beta_ref >= 1.0 + crack_smoothing_width && beta_ref <= low_band_top;
 }
 
 namespace {
@@ -125,29 +145,33 @@ constexpr int first_binade = -14, binades = 16, cell_bits = 5, cells_per_binade 
 constexpr int position_bits = 52 - cell_bits;
 }  // namespace
 
-CrackSpeedTable::CrackSpeedTable(double k) : k_(k), tabulated_(k == 0.02) {
-  if (!tabulated_) return;
-  // Cubic Hermite on each cell, from K13 (17)'s value and slope at its two ends (per unit t),
-  // in (17)'s own variables: x = 1/beta - 1 below beta = 1, x = beta - 1 above.
-  auto build = [](bool above) {
-    std::vector<Cell> cells;
-    cells.reserve(binades * cells_per_binade);
-    for (int e = first_binade; e < first_binade + binades; e++)
-      for (int j = 0; j < cells_per_binade; j++) {
-        const double x0 = std::ldexp(1.0 + double(j) / cells_per_binade, e), width = std::ldexp(1.0 / cells_per_binade, e);
-        auto at = [&](double x) {  // f and df/dx times the width
-          const double beta = above ? 1.0 + x : 1.0 / (1.0 + x);
-          const CrackSpeed f = crack_speed_low(beta);
-          return std::pair{f.value, f.derivative * (above ? 1.0 : -beta * beta) * width};
-        };
-        const auto [f0, s0] = at(x0);
-        const auto [f1, s1] = at(x0 + width);
-        cells.push_back({f0, s0, 3.0 * (f1 - f0) - 2.0 * s0 - s1, 2.0 * (f0 - f1) + s0 + s1});
-      }
-    return cells;
-  };
-  below_ = build(false);
-  above_ = build(true);
+namespace {
+// Cubic Hermite on each cell, from K13 (17)'s value and slope at its two ends (per unit t),
+// in (17)'s own variables: x = 1/beta - 1 below beta = 1, x = beta - 1 above.
+std::vector<CrackSpeedTable::Cell> build_cells(bool above) {
+  std::vector<CrackSpeedTable::Cell> cells;
+  cells.reserve(binades * cells_per_binade);
+  for (int e = first_binade; e < first_binade + binades; e++)
+    for (int j = 0; j < cells_per_binade; j++) {
+      const double x0 = std::ldexp(1.0 + double(j) / cells_per_binade, e), width = std::ldexp(1.0 / cells_per_binade, e);
+      auto at = [&](double x) {  // f and df/dx times the width
+        const double beta = above ? 1.0 + x : 1.0 / (1.0 + x);
+        const CrackSpeed f = crack_speed_low(beta);
+        return std::pair{f.value, f.derivative * (above ? 1.0 : -beta * beta) * width};
+      };
+      const auto [f0, s0] = at(x0);
+      const auto [f1, s1] = at(x0 + width);
+      cells.push_back({f0, s0, 3.0 * (f1 - f0) - 2.0 * s0 - s1, 2.0 * (f0 - f1) + s0 + s1});
+    }
+  return cells;
+}
+}  // namespace
+
+// The cells are those of the reference law, whatever k: built once, shared by every table.
+CrackSpeedTable::CrackSpeedTable(double k) : k_(k) {
+  static const std::vector<Cell> below = build_cells(false), above = build_cells(true);
+  below_ = &below;
+  above_ = &above;
 }
 
 CrackSpeed CrackSpeedTable::lookup(const std::vector<Cell>& cells, double x) const {
@@ -161,16 +185,21 @@ CrackSpeed CrackSpeedTable::lookup(const std::vector<Cell>& cells, double x) con
   return {c.c0 + t * (c.c1 + t * (c.c2 + t * c.c3)), (c.c1 + t * (2.0 * c.c2 + t * 3.0 * c.c3)) * per_width};
 }
 
-CrackSpeed CrackSpeedTable::operator()(double beta) const {
-  if (tabulated_ && beta >= low_band_bottom && beta <= low_band_top) {
+CrackSpeed CrackSpeedTable::reference(double beta) const {
+  if (beta >= low_band_bottom && beta <= low_band_top) {
     if (beta <= 1.0 - crack_smoothing_width) {
       const double inverse = 1.0 / beta;  // x = 1/beta - 1, dx/dbeta = -1/beta^2
-      const CrackSpeed f = lookup(below_, inverse - 1.0);
+      const CrackSpeed f = lookup(*below_, inverse - 1.0);
       return {f.value, -f.derivative * inverse * inverse};
     }
-    if (beta >= 1.0 + crack_smoothing_width) return lookup(above_, beta - 1.0);
+    if (beta >= 1.0 + crack_smoothing_width) return lookup(*above_, beta - 1.0);
   }
-  return crack_speed_function(beta, k_);
+  return reference_law(beta);
+}
+
+CrackSpeed CrackSpeedTable::operator()(double beta) const {
+  const CrackBeta r = reference_beta(beta, k_);
+  return crack_speed_at_k(reference(r.beta), beta, r);
 }
 
 }  // namespace bounce::models

@@ -136,14 +136,6 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
   const double hc = h * c;
   const double meeting = delta_r < 0.0 ? std::sqrt(-delta_r / 3.0) : 0.0;  // the branches' meeting point
   auto concave = [&](double b) { return crack_speed_concave(b, p.k); };
-  // For k != 0.02 f is (16) everywhere, which is nearly a step at beta = 1 (from +0.02 to -0.03
-  // within |beta - 1| < 1e-4 for k = 0.1, joined there with slopes of ~-400): an iterate on that
-  // ramp takes a correction far below 1e-4 a while the residual stays at a few per cent of a, the
-  // root lying beyond the ramp (a test grid had iterates stop 2e-3 a from it, k = 0.5). For such
-  // k an iterate is final where its residual is below 1e-6 a: where the residual's slope is >= 1
-  // on the way to the root (beta rising with a), the root is then within 1e-6 a of the iterate
-  // the step starts from, and the step is smaller still; or where the step is a few ulps.
-  const bool steep_near_one = p.k != 0.02;
   auto newton = [&](bool from_old) -> std::optional<double> {
     // beta = w^2 / (scale a), w = a^2 - delta R (K13 (14)); d beta / da = (4 a^2 w - w^2) / (scale a^2).
     double a = from_old ? a_old : guess, residual_old = 0.0;
@@ -162,9 +154,7 @@ CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base
       if (descending && a > meeting && a - step <= meeting && !concave(beta(meeting))) return std::nullopt;
       a -= step;
       if (!(a > 0.0)) return std::nullopt;
-      // A residual of 1e-6 a can be below what a's ulp times a steep slope gives: then a few ulps.
-      const double eps = std::numeric_limits<double>::epsilon();
-      if (steep_near_one ? std::abs(r) <= 1e-6 * a || std::abs(step) <= 4.0 * eps * a : std::abs(step) <= 1e-4 * a) {
+      if (std::abs(step) <= 1e-4 * a) {
         const bool connected = from_old ? (residual_old <= 0.0) == (a >= a_old) : std::abs(a - a_old) <= 0.25 * a_old;
         return connected ? std::optional<double>(a) : std::nullopt;
       }

@@ -46,7 +46,7 @@ std::vector<ModelRow> builtin_rows() {
        {relaxation_time(), dissipative_constant(), z0()}, &make_jkr_viscoelastic, {"gamma", "tvis", "yield"}, &jkr_viscoelastic_contact},
       {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
        "K13 (2), (14)-(21), appendices B, C", Capabilities{.adhesive = true, .dynamic_contact = true, .stiff = true},
-       {relaxation_time(), dissipative_constant(), z0(), k()}, &make_krijt, {"gamma", "tvis", "yield"}, {}, &krijt_crack_law},
+       {relaxation_time(), dissipative_constant(), krijt_z0(), k()}, &make_krijt, {"gamma", "tvis", "yield"}, {}, &krijt_crack_law},
   };
 }
 

@@ -85,6 +85,14 @@ def _json_difference(got, want, tolerance, path=""):
     """None when two parsed JSON values agree (numbers to their tolerance), else a description."""
     if isinstance(want, dict) and isinstance(got, dict) and list(got) == list(want):
         for key in want:
+            if key == "closure_error" and tolerance > 0.0 and isinstance(want.get("initial_kinetic"), float):
+                # The budget's residual: rounding and integration error, ~1e-16 to 1e-9 of the
+                # impact energy; a last-bit change elsewhere moves it by a large part of itself.
+                # What a change of the physics or of a tolerance moves is its size against the
+                # impact energy, compared to the tolerance of that energy.
+                if abs(got[key] - want[key]) <= tolerance * want["initial_kinetic"]:
+                    continue
+                return f"{path}.{key}: {got[key]!r} differs from the recorded {want[key]!r} by more than {tolerance:g} of the impact energy"
             d = _json_difference(got[key], want[key], tolerance, f"{path}.{key}" if path else key)
             if d:
                 return d

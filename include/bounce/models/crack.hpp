@@ -9,9 +9,9 @@
 // contact), f < 0 for 1 < beta < 1/k; f -> +inf at beta -> k and -inf at 1/k.
 //
 // Decision (docs/adhesive.md): (16) and (17) differ by 0.7% at beta = 0.29 and by
-// 0.5% at 3.7; for k = 0.02 we use (17) on [0.31, 3.6], (16) outside
+// 0.5% at 3.7; for K13's k = 0.02 we use (17) on [0.31, 3.6], (16) outside
 // [0.29, 3.7], and a C1 (smoothstep) blend on the two short overlaps, so that a
-// stiff solver never meets a jump. For k != 0.02 only (16) exists.
+// stiff solver never meets a jump. This is the *reference law* f_ref.
 //
 // Second decision: at the JKR equilibrium beta = 1, (17) behaves like
 // |beta - 1|^{1.116} and |beta - 1|^{1.140} (and (16) like 1/ln): continuous with its
@@ -22,6 +22,18 @@
 // where it is), which changes crack speeds only where the crack is quasi-static
 // (|f| < 1.2e-5 for k = 0.02) and the results by less than the integration error
 // (docs/adhesive.md).
+//
+// Third decision (docs/adhesive.md, "the crack law at any k"): (17) exists for k = 0.02 only,
+// and a law that switched from (16) and (17) to (16) alone at k != 0.02 jumped (a COR from
+// 0.533 to 0.562). In the Barenblatt-Schapery theory of a Dugdale zone in a three-element
+// solid (Greenwood 2004, the theory behind (16) and (17)), the opening crack's law is
+// f(beta) / beta a function of y = (1 - 1/beta)/(1 - k) alone, whatever k; (16) has that form
+// above 1, and below 1 the like form beta f(beta) of y = (1 - beta)/(1 - k) alone. So f at any
+// k is the reference law carried to k at equal y:
+//   beta < 1:  f(beta, k) = (beta_r / beta) f_ref(beta_r),  1 - beta_r = c (1 - beta),
+//   beta > 1:  f(beta, k) = (beta / beta_r) f_ref(beta_r),  1 - 1/beta_r = c (1 - 1/beta),
+// c = (1 - 0.02)/(1 - k). It is (16) exactly wherever the reference law is (16), K13's law
+// exactly at k = 0.02, and continuous (smooth) in k.
 
 #include <vector>
 
@@ -35,25 +47,40 @@ struct CrackSpeed {
 /// Half-width of the C2 join around beta = 1.
 constexpr double crack_smoothing_width = 1e-4;
 
-/// f(beta) and its derivative for k in (0, 1) and beta in (k, 1/k).
+/// The k of K13 (17), at which the reference law is K13's own.
+constexpr double crack_reference_k = 0.02;
+
+/// f(beta) and its derivative for k in (0, 1) and beta in (k, 1/k): the reference law carried to k.
 CrackSpeed crack_speed_function(double beta, double k);
+
+/// beta carried to the reference k at equal y (above), and c = (1 - 0.02)/(1 - k).
+struct CrackBeta {
+  double beta = 0.0;
+  double c = 1.0;
+};
+CrackBeta reference_beta(double beta, double k);
+/// f and df/dbeta at beta (at k) from f_ref and df_ref/dbeta_r at r = reference_beta(beta, k).
+CrackSpeed crack_speed_at_k(const CrackSpeed& reference, double beta, const CrackBeta& r);
 /// K13 (16) alone.
 CrackSpeed crack_speed_high(double beta, double k);
 /// K13 (17) alone (k = 0.02), for 0 < beta (beta != 1 excluded from nothing: f(1) = 0).
 CrackSpeed crack_speed_low(double beta);
 
-/// Whether f is concave at beta (f'' <= 0, f' < 0), where that holds in closed form: for
-/// k = 0.02 where (17) holds alone above beta = 1, 1 + crack_smoothing_width <= beta <= 3.6
-/// ((17) there is -(a x + b) x^p with a, b > 0, p = 1.1403 > 1 and x = beta - 1, whose second
-/// derivative is -(a p (p + 1) x^(p-1) + b p (p - 1) x^(p-2)) < 0). Elsewhere false: the join
-/// and the blends are not concave everywhere, nor is (16) near beta = 1 (its 1 / ln).
+/// Whether f is concave at beta (f'' <= 0, f' < 0), where that is known: where (17) holds alone
+/// above beta = 1 in the reference law, 1 + crack_smoothing_width <= beta_r <= 3.6. At k = 0.02 in
+/// closed form ((17) there is -(a x + b) x^p with a, b > 0, p = 1.1403 > 1 and x = beta - 1, whose
+/// second derivative is -(a p (p + 1) x^(p-1) + b p (p - 1) x^(p-2)) < 0); carried to another k
+/// (f = (1 + (1 - c) x) f_ref(c x / (1 + (1 - c) x)) with x = beta - 1) it stays concave there,
+/// tested on a dense grid for k from 1e-9 to 0.99 (CrackLaw.ConcaveWhereDeclared). Elsewhere
+/// false: the join and the blends are not concave everywhere, nor is (16) near beta = 1.
 bool crack_speed_concave(double beta, double k);
 
 /// crack_speed_function at one k, for a DEM code that evaluates it once per contact and step:
-/// for k = 0.02, where (17) alone holds (0.31 <= beta <= 3.6) and outside the join around
-/// beta = 1, f and f' come from a cubic Hermite table of (17)'s own values and slopes, on cells
-/// graded in (17)'s variable x (1/beta - 1 or beta - 1; 32 cells to a binade of x); elsewhere,
-/// and for any other k (whose (16) costs one log), crack_speed_function itself.
+/// where (17) alone holds in the reference law (0.31 <= beta_r <= 3.6) and outside the join
+/// around beta = 1, f_ref and f_ref' come from a cubic Hermite table of (17)'s own values and
+/// slopes, on cells graded in (17)'s variable x (1/beta - 1 or beta - 1; 32 cells to a binade of
+/// x), carried to k as crack_speed_function does; elsewhere crack_speed_function itself. The
+/// cells do not depend on k: one set, built once.
 /// Why a table of our own: (17)'s powers x^1.116 and x^1.1403 cost a libm pow each (20 ns on
 /// the reference machine, a quarter of krijt's DEM step, docs/benchmarks.md), a lookup a few ns;
 /// Boost's cardinal interpolators take a uniform grid, on which the power at x -> 0 would need
@@ -66,14 +93,16 @@ class CrackSpeedTable {
   explicit CrackSpeedTable(double k);
   CrackSpeed operator()(double beta) const;
 
- private:
   struct Cell {
     double c0, c1, c2, c3;  // f = c0 + t (c1 + t (c2 + t c3)), t in [0, 1) across the cell
   };
+
+ private:
   CrackSpeed lookup(const std::vector<Cell>& cells, double x) const;
+  CrackSpeed reference(double beta_ref) const;  // f_ref, tabulated where (17) holds alone
   double k_;
-  bool tabulated_ = false;
-  std::vector<Cell> below_, above_;  // x = 1/beta - 1 and x = beta - 1
+  const std::vector<Cell>* below_ = nullptr;  // x = 1/beta - 1
+  const std::vector<Cell>* above_ = nullptr;  // x = beta - 1
 };
 
 }  // namespace bounce::models

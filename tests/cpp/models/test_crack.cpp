@@ -1,4 +1,4 @@
-// The K13 crack law (16)/(17) and its C1 join.
+// The K13 crack law (16)/(17), its C1 join, and the law carried to any k (models/crack.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -94,10 +94,10 @@ TEST(CrackLaw, JoinAtEquilibrium) {
 }
 
 // The DEM's table of (17): against crack_speed_function over the whole range (k, 1/k), densely
-// and on a log scale towards every special point (k, 1, 1/k), for k = 0.02 (tabulated) and
-// another k (not: it must be crack_speed_function itself there).
+// and on a log scale towards every special point (k, 1, 1/k), for k = 0.02 and others (the
+// cells are the reference law's, carried to k as crack_speed_function carries it).
 TEST(CrackSpeedTable, MatchesTheCrackLaw) {
-  for (double k : {0.02, 0.05}) {
+  for (double k : {0.02, 0.05, 0.5}) {
     const CrackSpeedTable table(k);
     double value_error = 0.0, slope_error = 0.0;
     auto check = [&](double beta) {
@@ -146,4 +146,56 @@ TEST(CrackLaw, NeverIncreasesWithBeta) {
       last_table = t.value;
     }
   }
+}
+
+// Where the reference law is (16) alone (beta_r < 0.29 or > 3.7), the law at any k is (16) at that
+// k: (16) depends on beta and k only through beta and y, which the carrying keeps. Rounding in
+// 1 - c (1 - beta) and its inverse moves y by a few ulps; (16)'s log L = ln(1/y) turns that into
+// ~1e-16 / L of f, which grows towards the ends (L -> 0 as beta -> k or 1/k): 1e-14 (1 + 1/L).
+TEST(CrackLaw, SixteenAtAnyK) {
+  for (double k : {1e-6, 0.005, 0.1, 0.5, 0.9}) {
+    for (double beta = 1.0001 * k; beta < 0.9999 / k; beta *= 1.01) {
+      const double beta_ref = reference_beta(beta, k).beta;
+      if (beta_ref > 0.29 && beta_ref < 3.7) continue;
+      const CrackSpeed f = crack_speed_function(beta, k), h = crack_speed_high(beta, k);
+      const double l = std::log((1.0 - k) / (beta < 1.0 ? 1.0 - beta : 1.0 - 1.0 / beta));
+      const double tolerance = 1e-14 * (1.0 + 1.0 / l);
+      EXPECT_NEAR(f.value, h.value, tolerance * std::abs(h.value)) << k << " " << beta;
+      EXPECT_NEAR(f.derivative, h.derivative, 10 * tolerance * std::abs(h.derivative)) << k << " " << beta;
+    }
+  }
+}
+
+// Continuous in k: across K13's k = 0.02 (where the law used to switch from (16) and (17) to
+// (16) alone) f moves by ~1e-7 times its k-derivative, which is O(f / (1 - beta)) away from the
+// ends and grows towards them (the poles at k and 1/k move with k): within 1e-5 of f for beta
+// from 0.03 to 20 (1/k = 50) and k moved by 1e-7. At k = 0.02 it is K13's
+// law itself (PrintedFormulas: (17) exactly at beta = 0.5).
+TEST(CrackLaw, ContinuousInK) {
+  for (double beta = 0.03; beta < 20.0; beta *= 1.003) {
+    if (std::abs(beta - 1.0) < 1e-3) continue;  // f -> 0: compare where it is not
+    const double at = crack_speed_function(beta, 0.02).value;
+    for (double k : {0.02 - 1e-7, 0.02 + 1e-7}) {
+      EXPECT_NEAR(crack_speed_function(beta, k).value, at, 1e-5 * std::abs(at)) << k << " " << beta;
+    }
+  }
+}
+
+// crack_speed_concave's claim, checked: f'' <= 0 (a central difference of the analytic slope,
+// h = 1e-6 (beta - 1), truncation ~1e-12 of the curvature) wherever it says so, for k across
+// what `k` accepts. The crack step's Newton from a_old relies on it.
+TEST(CrackLaw, ConcaveWhereDeclared) {
+  int checked = 0;
+  for (double k : {1e-9, 1e-4, 0.005, 0.02, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99}) {
+    for (double beta = 1.0 + 1e-6; beta < 1.0 / k; beta *= 1.0 + 2e-4) {
+      if (!crack_speed_concave(beta, k)) continue;
+      const double h = 1e-6 * (beta - 1.0);
+      const double curvature =
+          (crack_speed_function(beta + h, k).derivative - crack_speed_function(beta - h, k).derivative) / (2 * h);
+      ASSERT_LE(curvature, 0.0) << k << " " << beta;
+      ASSERT_LT(crack_speed_function(beta, k).derivative, 0.0) << k << " " << beta;
+      checked++;
+    }
+  }
+  EXPECT_GT(checked, 40000);
 }
