@@ -17,9 +17,9 @@ namespace bounce::cli {
 
 namespace {
 
-std::string model_of(const api::Inputs& in) {
+std::string model_of(const std::string& command, const api::Inputs& in) {
   const auto it = in.find("model");
-  return it == in.end() ? "viscoelastic" : std::get<std::string>(it->second);
+  return it == in.end() ? api::default_model(api::command(command)) : std::get<std::string>(it->second);
 }
 
 // At most one output format.
@@ -142,7 +142,7 @@ std::function<int()> sticking(Options& o) {
     const api::Inputs in = o.inputs();
     if (!in.count("radii")) {
       const Record out = api::sticking(in);
-      *json ? print_json(out) : print_text(out, sticking_text(out, model_of(in)));
+      *json ? print_json(out) : print_text(out, sticking_text(out, model_of("sticking", in)));
       return 0;
     }
     Progress report("bounce sticking", *progress);

@@ -15,14 +15,18 @@ namespace {
 
 const std::string& str(const Record& r, std::string_view key) { return r.at(key).text(); }
 
-std::string capabilities_text(const Record& c) {
-  std::vector<std::string> on;
-  for (const auto& [key, value] : c.fields()) {
-    if (std::get<bool>(value.data())) on.push_back(key);
+// A model's traits in words: "force law, ends overlap | force, master curve, convex".
+std::string traits_text(const Record& t) {
+  std::string s = str(t, "engine");
+  std::string rules;
+  for (const Value& r : t.at("end_rules").list()) rules += (rules.empty() ? "" : " | ") + r.text();
+  s += ", ends " + rules;
+  if (str(t, "adhesion") != "negligible" && str(t, "adhesion") != "unchecked") s += ", adhesion " + str(t, "adhesion");
+  for (const char* flag : {"master_curve", "convex"}) {
+    if (std::get<bool>(t.at(flag).data())) s += std::string(", ") + (flag == std::string("convex") ? "convex" : "master curve");
   }
-  std::string s;
-  for (std::size_t i = 0; i < on.size(); ++i) s += (i ? ", " : "") + on[i];
-  return s.empty() ? "-" : s;
+  if (str(t, "dem_law") != "none") s += ", DEM law";
+  return s;
 }
 
 // A Markdown table cell: pipes escaped.
@@ -77,11 +81,11 @@ std::set<std::string> common_parameters(const Value::List& models, Value::List& 
 std::string models_markdown(const Value& registry) {
   const Record& r = registry.record();
   const Value::List& models = r.at("models").list();
-  std::string s = "| model | what | references | capabilities |\n|---|---|---|---|\n";
+  std::string s = "| model | what | references | traits |\n|---|---|---|---|\n";
   for (const Value& m : models) {
     const Record& row = m.record();
     s += fmt::format("| `{}` | {} | {} | {} |\n", str(row, "name"), cell(str(row, "summary")), cell(str(row, "references")),
-                     capabilities_text(row.at("capabilities").record()));
+                     traits_text(row.at("traits").record()));
   }
   Value::List common;
   const std::set<std::string> shared = common_parameters(models, common);
@@ -110,7 +114,7 @@ std::string models_text(const Value& registry) {
   for (const Value& m : registry.record().at("models").list()) {
     const Record& row = m.record();
     s += fmt::format("{:<22} {}\n{:<22} {}; {}\n", str(row, "name"), str(row, "summary"), "", str(row, "references"),
-                     capabilities_text(row.at("capabilities").record()));
+                     traits_text(row.at("traits").record()));
     std::vector<std::string> names;
     for (const Value& p : row.at("parameters").list()) names.push_back(p.record().at("name").text());
     std::string line;

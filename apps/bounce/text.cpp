@@ -160,8 +160,10 @@ std::string sticking_text(const Record& j, const std::string& model) {
                     num(j, "sticking_velocity"), model, bracket[0].number(), bracket[1].number(),
                     std::get<std::int64_t>(j.at("collisions").data()));
   }
-  s += fmt::format("elastic JKR (exact)  {:.8g} m/s\nK13 (25)             {:.8g} m/s\n", num(j, "sticking_velocity_jkr"),
-                   num(j, "sticking_velocity_k13_25"));
+  if (j.contains("sticking_velocity_jkr")) {
+    s += fmt::format("elastic JKR (exact)  {:.8g} m/s\nK13 (25)             {:.8g} m/s\n", num(j, "sticking_velocity_jkr"),
+                     num(j, "sticking_velocity_k13_25"));
+  }
   if (j.contains("sticking_velocity_bp04_8_100")) {
     s += fmt::format("BP04 (8.100)         {:.8g} m/s\nBP04 (8.101)         {:.8g} m/s\n",
                      num(j, "sticking_velocity_bp04_8_100"), num(j, "sticking_velocity_bp04_8_101"));

@@ -12,6 +12,7 @@
 
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/models/registry.hpp"
 #include "bounce/pair/materials_table.hpp"
 #include "bounce/pair/pair_parameters.hpp"
 
@@ -162,7 +163,7 @@ void bind_objects(py::module_& m) {
       });
 
   py::class_<PyModel>(m, "Model", "A collision model and its parameters (the CLI's option names, SI units).")
-      .def(py::init(&make_py_model), py::arg("name") = "viscoelastic",
+      .def(py::init(&make_py_model), py::arg("name") = std::string(models::ModelRegistry::default_name()),
            "Model('krijt', tvis=1e-11): any model of bounce.models() with the parameters it takes (bounce.models() "
            "lists them; yield_strength is Python's spelling of yield). A parameter the model does not take is a "
            "ValueError.")

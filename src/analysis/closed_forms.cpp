@@ -16,7 +16,7 @@ void add_adhesive(ClosedForms& c, const Pair& pair, const models::Model& model, 
   c.sticking_velocity_k13_25 = analytic::sticking_velocity_k13(m, r, e, gamma);  // K13 (25)
   c.e_jkr = analytic::cor_jkr(v, *c.sticking_velocity_jkr);                     // K13 (24)
   c.tabor_parameter = contact::surface::tabor_parameter(r, e, gamma, model.z0);  // K13 (11)
-  if (model.adhesion == models::Adhesion::weak) {
+  if (model.traits.closed_forms.bp04_weak) {
     const double w0 = analytic::tensile_work(r, e, gamma);  // BP04 (8.95)
     const ViscoelasticScales s = viscoelastic_scales(pair, model, v);
     c.tensile_work_bp04_8_95 = w0;
@@ -32,8 +32,12 @@ ClosedForms closed_forms(const Pair& pair, const models::Model& model, double v)
   const double r = pair.effective_radius(), e = pair.effective_modulus(), m = pair.effective_mass();
   c.hertz_time_k13_22 = analytic::hertz_contact_time_k13(m, r, e, v);  // K13 (22)
   const auto gamma = pair.surface_energy();
-  if (gamma && *gamma > 0.0) add_adhesive(c, pair, model, *gamma, v);
-  if (model.dissipative_constant) {
+  const models::ClosedFormSet& declared = model.traits.closed_forms;
+  if (declared.jkr && gamma && *gamma > 0.0) add_adhesive(c, pair, model, *gamma, v);
+  if (!declared.jkr && gamma && *gamma > 0.0) {
+    c.tabor_parameter = contact::surface::tabor_parameter(r, e, *gamma, model.z0);  // K13 (11)
+  }
+  if (declared.viscous && model.dissipative_constant) {
     c.dissipative_constant = *model.dissipative_constant;
     c.e_d = analytic::cor_viscous_k13(*c.dissipative_constant, c.hertz_time_k13_22);  // K13 (26)
     if (c.e_jkr) c.e_i = analytic::cor_independent(*c.e_jkr, *c.e_d);                // K13 (27)

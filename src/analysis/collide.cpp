@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -47,7 +48,7 @@ CollisionOutcome from_master(const Pair& pair, const models::Model& model, doubl
 
 // Master curve or integration, by the requested method and what the model allows.
 bool use_master_curve(const models::Model& model, const CollideOptions& options) {
-  const bool has = model.capabilities.master_curve;
+  const bool has = model.traits.master_curve;
   switch (options.method) {
     case Method::automatic:
       return has && !options.record_trajectory && options.tangential_velocity <= 0.0;
@@ -81,7 +82,7 @@ CollisionOutcome oblique_force_law(const Pair& pair, const models::Model& model,
                                    const CollideOptions& options) {
   dynamics::NormalCollisionOptions o = normal_options(model, options);
   o.record_trajectory = false;
-  auto both = dynamics::integrate_tangential_collision(*model.force, pair.effective_mass(), velocity,
+  auto both = dynamics::integrate_tangential_collision(*model.force_law(), pair.effective_mass(), velocity,
                                                        options.tangential_velocity, *model.tangential, o);
   CollisionOutcome out = std::move(both.normal);
   if (out.outcome == dynamics::Outcome::bounce) {
@@ -91,7 +92,7 @@ CollisionOutcome oblique_force_law(const Pair& pair, const models::Model& model,
   }
   if (options.record_trajectory) {
     o.record_trajectory = true;
-    out.trajectory = dynamics::integrate_normal_collision(*model.force, pair.effective_mass(), velocity, o).trajectory;
+    out.trajectory = dynamics::integrate_normal_collision(*model.force_law(), pair.effective_mass(), velocity, o).trajectory;
   }
   return out;
 }
@@ -102,10 +103,10 @@ CollisionOutcome force_law_collision(const Pair& pair, const models::Model& mode
   if (options.tangential_velocity > 0.0) return oblique_force_law(pair, model, velocity, options);
   if (master) return from_master(pair, model, velocity);
   try {
-    return dynamics::integrate_normal_collision(*model.force, pair.effective_mass(), velocity,
+    return dynamics::integrate_normal_collision(*model.force_law(), pair.effective_mass(), velocity,
                                                 normal_options(model, options));
   } catch (const dynamics::StepBudgetExceeded& e) {
-    if (!model.capabilities.master_curve) throw;
+    if (!model.traits.master_curve) throw;
     throw NumericalError(fmt::format("{} (kappa = {:.3g}: the contact creeps apart for a very long time; the master "
                                      "curve, --method master, gives this collision exactly)",
                                      e.what(), viscoelastic_scales(pair, model, velocity).kappa));
@@ -139,26 +140,42 @@ dynamics::AdhesiveCollisionOptions adhesive_options(const CollideOptions& option
   return o;
 }
 
-CollisionOutcome dynamic_contact_collision(const Pair& pair, const models::Model& model, double velocity,
-                                           const CollideOptions& options) {
+dynamics::AdhesiveCollisionOptions contact_options(const models::Model& model, const CollideOptions& options) {
   if (options.method == Method::master) {
     throw InvalidArgument("method", "master", fmt::format("integrate for model {} (it has no master curve)", model.name));
   }
-  const models::DynamicContact& contact = *model.dynamic_contact;
-  const models::KrijtParameters& p = contact.parameters;
-  const double hysteresis = models::krijt_hysteresis_estimate(p, velocity);
-  const bool reduced = !contact.instantaneous_crack && hysteresis < models::krijt_reduction_threshold;
   auto o = adhesive_options(options);
   if (model.end_rule == models::EndRule::pull_off) o.release = dynamics::AdhesiveRelease::pull_off;
-  CollisionOutcome out = contact.instantaneous_crack || reduced
-                             ? dynamics::integrate_jkr_viscoelastic_collision(p, velocity, o)
-                             : dynamics::integrate_krijt_collision(p, velocity, o);
-  if (reduced) {
-    out.notes.push_back(fmt::format(
-        "the crack is so fast that its hysteresis ({:.2g} of the impact energy) is below the integration "
-        "error: integrated as the fast-crack limit jkr-viscoelastic (singular-perturbation reduction)",
-        hysteresis));
-  }
+  return o;
+}
+
+// A contact held on its adhesive branch (jkr-viscoelastic, maugis-viscoelastic).
+CollisionOutcome adhesive_contact_collision(const models::AdhesiveContact& contact, double velocity,
+                                            const dynamics::AdhesiveCollisionOptions& o) {
+  return dynamics::integrate_adhesive_collision(contact.parameters, *contact.geometry, velocity, o);
+}
+
+// K13's crack (krijt); where the crack is so fast that its hysteresis is below the integration
+// error, its fast-crack limit on JKR's branch (a singular-perturbation reduction).
+CollisionOutcome crack_collision(const models::CrackContact& contact, double velocity,
+                                 const dynamics::AdhesiveCollisionOptions& o) {
+  const models::KrijtParameters& p = contact.parameters;
+  const double hysteresis = models::krijt_hysteresis_estimate(p, velocity);
+  if (hysteresis >= models::krijt_reduction_threshold) return dynamics::integrate_krijt_collision(p, velocity, o);
+  CollisionOutcome out = dynamics::integrate_jkr_viscoelastic_collision(p, velocity, o);
+  out.notes.push_back(fmt::format(
+      "the crack is so fast that its hysteresis ({:.2g} of the impact energy) is below the integration "
+      "error: integrated as the fast-crack limit jkr-viscoelastic (singular-perturbation reduction)",
+      hysteresis));
+  return out;
+}
+
+CollisionOutcome contact_collision(const Pair& pair, const models::Model& model, double velocity,
+                                   const CollideOptions& options) {
+  const auto o = contact_options(model, options);
+  CollisionOutcome out = std::holds_alternative<models::AdhesiveContact>(model.normal)
+                             ? adhesive_contact_collision(std::get<models::AdhesiveContact>(model.normal), velocity, o)
+                             : crack_collision(std::get<models::CrackContact>(model.normal), velocity, o);
   if (options.tangential_velocity > 0.0) {
     add_recorded_tangential(out, pair, model, options);
     if (!options.record_trajectory) out.trajectory.clear();
@@ -286,9 +303,10 @@ CollisionOutcome collide(const Pair& pair, const models::Model& model, double ve
   if (options.tangential_velocity > 0.0 && !model.tangential) {
     throw InvalidArgument("friction", "(not given)", "a friction coefficient mu >= 0 (BSHP96 (36))");
   }
-  CollisionOutcome out = model.dynamic_contact ? dynamic_contact_collision(pair, model, velocity, options)
-                                               : force_law_collision(pair, model, velocity, options);
-  bound_passive_cor(out, model.dynamic_contact ? options.adhesive_tolerance : options.integration.relative_tolerance);
+  const bool force_law = model.force_law() != nullptr;
+  CollisionOutcome out = force_law ? force_law_collision(pair, model, velocity, options)
+                                   : contact_collision(pair, model, velocity, options);
+  bound_passive_cor(out, force_law ? options.integration.relative_tolerance : options.adhesive_tolerance);
   if (model.yield_strength) add_plastic_losses(out, pair, velocity, *model.yield_strength);
   detail::add_warnings(out, pair, model, velocity);
   return out;

@@ -108,7 +108,7 @@ NormalTable build_normal_table(const Pair& pair, const models::Model& model, dou
   t.g_min = g_min;
   t.g_max = g_max;
   t.bound = table.bound;
-  if (model.capabilities.adhesive) {
+  if (model.traits.adhesive) {
     const StickingVelocity v = sticking_velocity(pair, model, options, 1e-13);
     if (v.upper > g_min) t.sticking_velocity = v.upper;  // the smallest speed found to bounce
     if (v.sticks_up_to_sound_speed || v.upper >= g_max) {

@@ -47,7 +47,7 @@ void bracket_downwards(StickingVelocity& s, double v, Sticks sticks) {
 
 StickingVelocity sticking_velocity(const Pair& pair, const models::Model& model, const CollideOptions& options,
                                    double relative_tolerance) {
-  if (!model.capabilities.adhesive) {
+  if (!model.traits.adhesive) {
     throw InvalidArgument("model", model.name, "an adhesive model (adhesive-viscoelastic, jkr-viscoelastic, krijt)");
   }
   const double gamma = pair.require_surface_energy("the sticking velocity");

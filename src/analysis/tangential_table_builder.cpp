@@ -41,7 +41,7 @@ struct CheckPoint {
 // The checks of build_tangential_table: a non-adhesive force law with the published
 // asperity law, and g^T below where the direct integration averages dense breaks.
 const models::TangentialModel& tabulable(const models::Model& model, double gn_min, double gn_max, double gt_max) {
-  if (!model.force || model.capabilities.adhesive) {
+  if (!model.force_law() || model.traits.adhesive) {
     throw InvalidArgument("model", model.name,
                           "a non-adhesive force-law model for an eps^T table (hertz, viscoelastic, "
                           "viscoelastic-shifted, power-law; docs/tables.md)");
@@ -62,7 +62,7 @@ const models::TangentialModel& tabulable(const models::Model& model, double gn_m
   // dense_breaks times per time unit; the table resolves every break, so its range must
   // stay clear of that (with a factor 2 for speeds above g^T, published form).
   for (const double gn : {gn_min, gn_max}) {
-    const double time_unit = model.force->reference_overlap(gn) / gn;
+    const double time_unit = model.force_law()->reference_overlap(gn) / gn;
     const double limit = 0.5 * tangential.dense_breaks * tangential.asperity_size / time_unit;
     if (gt_max > limit) {
       throw InvalidArgument("tangential_velocity_max", fmt::format("{:g}", gt_max),
@@ -112,7 +112,7 @@ class Builder {
 // where F^N returns to 0 after the compression (beyond it F^T = 0: asperities carry no
 // shear in tension), whatever rule ends the contact.
 void Builder::fill_row(std::size_t r) {
-  const models::NormalForceModel& force = *model_.force;
+  const models::NormalForceModel& force = *model_.force_law();
   const double mass = pair_.effective_mass(), gn = std::exp(t_.x0 + static_cast<double>(r) * t_.dx);
   const double time_unit = force.reference_overlap(gn) / gn;
   dynamics::NormalCollisionOptions o;

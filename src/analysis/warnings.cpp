@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -80,17 +81,13 @@ void add_k13_appendix_a_warnings(CollisionOutcome& out, const Pair& pair, const 
 }
 
 // K13 §2.1.2: the JKR-based adhesive models assume the Tabor parameter mu > 5.
-void add_adhesive_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model, double contact_time) {
+void add_tabor_warning(CollisionOutcome& out, const Pair& pair, const models::Model& model) {
   const double gamma = *pair.surface_energy();
   const double mu = contact::surface::tabor_parameter(pair.effective_radius(), pair.effective_modulus(), gamma, model.z0);
   if (mu < 5.0) {
     out.warnings.push_back(fmt::format(
         "Tabor parameter mu = {:.3g} < 5 (K13 (11), z0 = {:g} m): the JKR-based adhesive model may not apply "
         "(DMT below 0.1, Maugis-Dugdale between)", mu, model.z0));
-  }
-  const auto& contact = model.dynamic_contact;
-  if (contact && !contact->instantaneous_crack && contact_time > 0.0) {
-    add_k13_appendix_a_warnings(out, pair, contact->parameters, contact_time);
   }
 }
 
@@ -128,9 +125,12 @@ void add_tangential_warnings(CollisionOutcome& out) {
 void add_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model, double velocity) {
   const CollisionTime t_c = collision_time(out, pair, velocity);
   add_validity_warnings(out, pair, velocity, model.viscous_time, t_c);
-  if (model.capabilities.adhesive) add_adhesive_warnings(out, pair, model, t_c.value);
-  if (model.adhesion == models::Adhesion::negligible || model.adhesion == models::Adhesion::weak) {
-    add_adhesion_validity_warning(out, pair, velocity, model.adhesion == models::Adhesion::weak);
+  const models::Adhesion adhesion = model.traits.adhesion;
+  if (adhesion == models::Adhesion::jkr || adhesion == models::Adhesion::weak) add_tabor_warning(out, pair, model);
+  const auto* crack = std::get_if<models::CrackContact>(&model.normal);
+  if (crack && t_c.value > 0.0) add_k13_appendix_a_warnings(out, pair, crack->parameters, t_c.value);
+  if (adhesion == models::Adhesion::negligible || adhesion == models::Adhesion::weak) {
+    add_adhesion_validity_warning(out, pair, velocity, adhesion == models::Adhesion::weak);
   }
   add_tangential_warnings(out);
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "binding.hpp"
 #include "bounce/analysis/closed_forms.hpp"
@@ -37,9 +38,13 @@ analysis::CollideOptions collide_options(const Case& c) {
     }
   }
   if (c.own.spec("follow") != nullptr && c.own.given("follow")) {
-    if (!c.model.dynamic_contact) {
-      c.own.refuse_given(std::array{"follow"},
-                         "a model with contact dynamics (krijt, jkr-viscoelastic): the others stop at separation");
+    if (c.model.traits.engine == models::Engine::force_law) {
+      std::vector<std::string> with;
+      for (const auto& row : models::model_registry().rows()) {
+        if (row.traits.engine != models::Engine::force_law) with.push_back(row.name);
+      }
+      c.own.refuse_given(std::array{"follow"}, fmt::format("a model with contact dynamics ({}): the others stop at "
+                                                           "separation", fmt::join(with, ", ")));
     }
     o.follow_time = *c.own.real("follow");
   }
@@ -59,7 +64,7 @@ Record collide(const Inputs& inputs) {
   out.set("contact_end", models::to_string(c.model.end_rule));
   out.set("velocity", velocity);
   detail::add_scales(out, c.pair, c.model, velocity);
-  if (c.model.capabilities.adhesive || c.model.yield_strength) {
+  if (c.model.traits.adhesive || c.model.yield_strength) {
     out.set("closed_forms", detail::closed_forms_record(c.pair, c.model, velocity));
   }
   if (outcome.outcome == dynamics::Outcome::stick) out.set("merged", detail::merged_record(c.pair, velocity));
@@ -118,7 +123,7 @@ Record curve(const Inputs& inputs, const Progress& progress) {
   const Sweep s = sweep_of(bound.own);
   const Case first = detail::make_case(bound, s.by_radius ? std::optional(s.values.front()) : std::nullopt);
   const bool closed = first.own.flag("closed_forms");
-  if (closed && !first.model.capabilities.adhesive) {
+  if (closed && !first.model.traits.adhesive) {
     throw InvalidArgument("closed_forms", "true", "an adhesive model (the columns are K13 (24), (26), (27))");
   }
   const analysis::CollideOptions options = collide_options(first);

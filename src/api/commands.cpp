@@ -57,7 +57,7 @@ CommandSpec collide_command() {
                                        "samples of the trajectory over about one contact time (default 400)"),
                         400.0),
            real_parameter("follow", "follow time", "s", positive(),
-                          "krijt / jkr-viscoelastic: keep integrating a sticking collision until this time [s]")}};
+                          "models with contact dynamics: keep integrating a sticking collision until this time [s]")}};
 }
 
 CommandSpec curve_command() {
@@ -100,8 +100,8 @@ CommandSpec table_command() {
 CommandSpec analytic_command() {
   CommandSpec c{"analytic", "kappa, g* and the exact COR beside BP04's implicit, series and Pade forms", true, true,
                 {velocity("impact velocity g [m/s]")}};
-  c.models = {"viscoelastic"};
-  c.models_why = "viscoelastic (the closed forms of BP04 §8.3 are for it)";
+  c.models = models::model_registry().names_where([](const models::ModelRow& r) { return r.traits.analytic; });
+  c.models_why = fmt::format("{} (the closed forms of BP04 §8.3 are derived for it)", fmt::join(c.models, ", "));
   c.unused = {{{"contact_end", "yield", "method", "tolerance"},
                "none with analytic: it gives both end rules, without plastic losses"},
               {tangential_parameters(), "none with analytic: BP04's forms are head-on"}};
@@ -124,8 +124,15 @@ CommandSpec fit_command() {
                  flag_parameter("grid_only", "report the grid's minimum, without refining it"),
                  flag_parameter("chi2_grid", "include the whole chi^2 grid (row-major, yield innermost)"),
                  flag_parameter("timing", "include where the time went (grid collisions, e_P, chi^2, refinement)")}};
-  c.models = {"krijt", "jkr-viscoelastic", "adhesive-viscoelastic", "viscoelastic", "viscoelastic-shifted", "hertz"};
+  const auto& registry = models::model_registry();
+  c.models = registry.names_where([](const models::ModelRow& r) { return !r.fit.empty(); });
   c.models_why = "a model with parameters to fit: " + fmt::format("{}", fmt::join(c.models, ", "));
+  // K13 §4 fits K13's model: the first line of its comparison of mechanisms (K13 Fig 6).
+  for (const auto& row : registry.rows()) {
+    for (const auto& k : row.traits.comparisons) {
+      if (k.rank == 1) c.default_model = row.name;
+    }
+  }
   c.unused = {{tangential_parameters(), "none with fit: the restitution data are of head-on collisions"}};
   return c;
 }
@@ -137,9 +144,10 @@ CommandSpec lammps_command() {
   CommandSpec c{"lammps", "Stock LAMMPS pair_style granular lines that best represent a model (docs/lammps.md)", true, true,
                 {type("type", "the first atom type of the pair_coeff line (default 1)"),
                  type("type2", "the second atom type (default: type for like bodies, else type + 1)")}};
-  c.models = {"viscoelastic", "hertz", "jkr-viscoelastic"};
-  c.models_why = "viscoelastic, hertz or jkr-viscoelastic (the models stock LAMMPS has; pair_style bounce has every "
-                 "model)";
+  c.models = models::model_registry().names_where(
+      [](const models::ModelRow& r) { return r.traits.stock_lammps != models::StockLammps::none; });
+  c.models_why = fmt::format("{} (the models stock LAMMPS has; pair_style bounce has every model)",
+                             fmt::join(c.models, ", "));
   c.unused = {{tangential_parameters(), "none with lammps: stock LAMMPS has no BSHP96 asperity law"},
               {{"yield"}, "none with lammps: plastic losses are a post-collision rule, not a LAMMPS contact force"},
               {{"method", "tolerance", "adhesive_tolerance", "curvature_radii", "curvature_radii2", "angle"},
@@ -251,7 +259,18 @@ ParameterSpec keyword_parameter(const char* name, std::vector<std::string> names
 }
 }  // namespace
 
-ParameterSpec model_parameter() { return keyword_parameter("model", models::model_registry().names(), "viscoelastic"); }
+ParameterSpec model_parameter() {
+  return keyword_parameter("model", models::model_registry().names(), models::ModelRegistry::default_name());
+}
+
+// The model a command uses when none is named: its own default, else the registry's where the
+// command takes it, else its first.
+std::string default_model(const CommandSpec& c) {
+  if (!c.default_model.empty()) return c.default_model;
+  const std::string fallback = models::ModelRegistry::default_name();
+  if (c.models.empty() || std::find(c.models.begin(), c.models.end(), fallback) != c.models.end()) return fallback;
+  return c.models.front();
+}
 
 ParameterSpec law_parameter() {
   std::vector<std::string> names;
@@ -263,7 +282,7 @@ std::vector<ParameterSpec> offered_parameters(std::string_view name) {
   const CommandSpec& c = command(name);
   std::vector<ParameterSpec> extra;
   if (c.takes_model) {
-    extra.push_back(c.models.empty() ? model_parameter() : keyword_parameter("model", c.models, c.models.front().c_str()));
+    extra.push_back(c.models.empty() ? model_parameter() : keyword_parameter("model", c.models, default_model(c).c_str()));
     for (const auto& row : models::model_registry().rows()) {
       if (!takes_model(c, row.name)) continue;
       for (const ParameterSpec& s : row.parameters) {
@@ -295,7 +314,7 @@ Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
   const bool law = c.name == "contact";
   std::vector<ParameterSpec> group;  // the model's or the law's parameters
   if (c.takes_model) {
-    b.model = chosen(inputs, "model", c.models.empty() ? "viscoelastic" : c.models.front().c_str());
+    b.model = chosen(inputs, "model", default_model(c).c_str());
     group = models::model_registry().at(b.model).parameters;
     if (!takes_model(c, b.model)) throw InvalidArgument("model", b.model, c.models_why);
     for (const auto& [name, value] : inputs) {

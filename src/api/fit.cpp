@@ -192,20 +192,25 @@ Fitted run_fit(const Inputs& inputs, const analysis::Experiment& data, const Pro
   return {std::move(state), std::move(result)};
 }
 
-// The comparison of K13 Fig 6 and §4.2: the three mechanisms together and without some.
+// The comparison of K13 Fig 6 and §4.2: the three mechanisms together and without some, as the
+// models declare their lines (models::Traits::comparisons), by rank.
 struct Comparison {
-  const char* label;
-  const char* model;
-  const char* fit;
+  std::string label;
+  std::string model;
+  std::string fit;
   std::optional<double> a;  // a fixed A [s] (0: no bulk damping)
 };
-constexpr Comparison comparisons[] = {
-    {"K13: adhesion, viscous crack, bulk damping, plastic", "krijt", "gamma,tvis,yield", std::nullopt},
-    {"instantaneous JKR crack, bulk damping, plastic", "jkr-viscoelastic", "gamma,tvis,yield", std::nullopt},
-    {"BP04 quasi-static adhesion, viscous, plastic", "adhesive-viscoelastic", "gamma,tvis,yield", std::nullopt},
-    {"elastic JKR + plastic (K13 Fig 6 dashed)", "jkr-viscoelastic", "gamma,yield", 0.0},
-    {"viscoelastic + plastic, no adhesion", "viscoelastic", "A,yield", std::nullopt},
-};
+
+std::vector<Comparison> comparisons() {
+  std::vector<std::pair<int, Comparison>> lines;
+  for (const auto& row : models::model_registry().rows()) {
+    for (const auto& k : row.traits.comparisons) lines.push_back({k.rank, {k.label, row.name, k.fit, k.dissipative_constant}});
+  }
+  std::stable_sort(lines.begin(), lines.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Comparison> out;
+  for (auto& line : lines) out.push_back(std::move(line.second));
+  return out;
+}
 
 // The user's inputs for a comparison model: the pair's and the numerical ones, the model's
 // where that model takes them and does not fit them, grids of the parameters it fits.
@@ -291,7 +296,7 @@ Table best_curve(const Fitted& f, const analysis::Experiment& data) {
   lo /= 2.0;
   hi = std::min(2.0 * hi, c.pair.transversal_sound_speed());
   const auto gamma = c.pair.surface_energy();
-  const bool adhesive = c.model.capabilities.adhesive && gamma && *gamma > 0.0;
+  const bool adhesive = c.model.traits.adhesive && gamma && *gamma > 0.0;
   const double v_s = adhesive ? analytic::sticking_velocity_k13(c.pair.effective_mass(), c.pair.effective_radius(),
                                                                c.pair.effective_modulus(), *gamma)
                               : 0.0;  // K13 (25)
@@ -342,7 +347,7 @@ Record fit(const Inputs& inputs, const analysis::Experiment& data, const Progres
   Record r = result_record(main);
   if (!bound.own.flag("compare")) return r;
   Value::List rows;
-  for (const Comparison& k : comparisons) {
+  for (const Comparison& k : comparisons()) {
     const bool same = main.plan().model == k.model && !k.a &&
                       fmt::format("{}", fmt::join(main.result.names, ",")) == k.fit;
     rows.push_back(comparison_row(k, same ? main : run_fit(comparison_inputs(inputs, k), data, progress), data));

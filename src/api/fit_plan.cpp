@@ -27,7 +27,7 @@ std::vector<ParameterSpec> fittable_parameters(const std::string& model) {
   std::vector<ParameterSpec> out;
   const auto& row = models::model_registry().at(model);
   for (const ParameterSpec& s : pair_parameters()) {
-    if (s.fit && row.capabilities.adhesive) out.push_back(s);
+    if (s.fit && row.traits.adhesive) out.push_back(s);
   }
   for (const ParameterSpec& s : row.parameters) {
     if (s.fit) out.push_back(s);
@@ -162,7 +162,7 @@ detail::Plan detail::make_plan(const Bound& bound, const Inputs& inputs, const s
       }
     }
   }
-  if (!plan.fixed.count("adhesive_tolerance") && models::model_registry().at(model).capabilities.dynamic_contact) {
+  if (!plan.fixed.count("adhesive_tolerance") && models::model_registry().at(model).traits.engine != models::Engine::force_law) {
     plan.fixed["adhesive_tolerance"] = fit_adhesive_tolerance;
   }
   const Pair& pair = plan.pair.emplace(bounce::make_pair(bound.pair));

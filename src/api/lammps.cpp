@@ -134,7 +134,7 @@ Export export_lines(const Case& c, long type1, long type2) {
   // LAMMPS 29Sep2021 stops with "Neighbor history overflow" when a jkr contact outlives a
   // neighbor-list exchange with no history values (linear_nohistory; measured).
   std::string tangential = "tangential linear_nohistory 0 0";
-  if (model.name == "jkr-viscoelastic") {
+  if (model.traits.stock_lammps == models::StockLammps::jkr) {
     tangential = "tangential linear_history 0 0 0";
     const double w = pair.surface_energy().value_or(0.0);
     out.mapping.set("gamma_lammps", 0.5 * w);

@@ -49,13 +49,41 @@ Value parameters_value(const std::vector<ParameterSpec>& specs) {
   return out;
 }
 
-Record capabilities_record(const models::Capabilities& c) {
+std::string engine_name(models::Engine e) {
+  switch (e) {
+    case models::Engine::force_law: return "force law";
+    case models::Engine::adhesive: return "adhesive contact";
+    case models::Engine::crack: return "crack";
+  }
+  return "";
+}
+
+std::string adhesion_name(models::Adhesion a) {
+  switch (a) {
+    case models::Adhesion::unchecked: return "unchecked";
+    case models::Adhesion::negligible: return "negligible";
+    case models::Adhesion::weak: return "weak";
+    case models::Adhesion::jkr: return "jkr";
+    case models::Adhesion::maugis: return "maugis-dugdale";
+  }
+  return "";
+}
+
+// What a row declares about its model (models::Traits), and which DEM law it has.
+Record traits_record(const models::ModelRow& row) {
+  const models::Traits& t = row.traits;
+  Value::List rules;
+  for (models::EndRule r : t.end_rules) rules.emplace_back(std::string(models::to_string(r)));
+  const char* dem = row.crack_law ? "contact radius of its own" : row.contact_law ? "force" : "none";
   return Record()
-      .set("adhesive", c.adhesive)
-      .set("dynamic_contact", c.dynamic_contact)
-      .set("master_curve", c.master_curve)
-      .set("stiff", c.stiff)
-      .set("convex", c.convex);
+      .set("engine", engine_name(t.engine))
+      .set("end_rules", rules)
+      .set("adhesion", adhesion_name(t.adhesion))
+      .set("adhesive", t.adhesive)
+      .set("master_curve", t.master_curve)
+      .set("convex", t.convex)
+      .set("dem_law", dem)
+      .set("docs", "docs/" + t.docs);
 }
 
 }  // namespace
@@ -76,7 +104,7 @@ Value models() {
                              .set("name", row.name)
                              .set("summary", row.summary)
                              .set("references", row.references)
-                             .set("capabilities", capabilities_record(row.capabilities))
+                             .set("traits", traits_record(row))
                              .set("parameters", parameters_value(row.parameters)));
   }
   for (const auto& row : contact::contact_laws()) {

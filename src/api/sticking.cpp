@@ -17,9 +17,11 @@ Record sticking_closed_forms(const Pair& pair, const models::Model& model) {
   const double gamma = pair.require_surface_energy("model " + model.name);
   const double r = pair.effective_radius(), e = pair.effective_modulus(), m = pair.effective_mass();
   Record j;
-  j.set("sticking_velocity_jkr", analytic::sticking_velocity_jkr(m, r, e, gamma));
-  j.set("sticking_velocity_k13_25", analytic::sticking_velocity_k13(m, r, e, gamma));
-  if (model.adhesion == models::Adhesion::weak) {
+  if (model.traits.closed_forms.jkr) {
+    j.set("sticking_velocity_jkr", analytic::sticking_velocity_jkr(m, r, e, gamma));
+    j.set("sticking_velocity_k13_25", analytic::sticking_velocity_k13(m, r, e, gamma));
+  }
+  if (model.traits.closed_forms.bp04_weak) {
     const double w0 = analytic::tensile_work(r, e, gamma);
     j.set("sticking_velocity_bp04_8_100", analysis::sticking_velocity_bp04(pair, model));
     j.set("sticking_velocity_bp04_8_101",

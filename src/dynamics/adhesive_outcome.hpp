@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include "bounce/contact/independent.hpp"
 #include "bounce/dynamics/outcome.hpp"
 #include "bounce/models/krijt.hpp"
 #include "krijt_system.hpp"
@@ -27,24 +26,24 @@ inline std::string followed_note(double follow_time, double end) {
                      "became certain at {:.6g} s (contact_time)", follow_time, end);
 }
 
-/// The end of an adhesive collision with contact radius a, approach delta and scaled rate
-/// v = delta'/g (the bulk and crack dissipation already in out.energy). A break releases
-/// what U_E + U_S held at the crack (the run-away to a = 0 is instantaneous, K13 (C.2)):
-/// e = -v; sticking grains keep U_E and U_S.
-inline void finish_adhesive(CollisionOutcome& out, const models::KrijtParameters& p, const Scales& s, double v,
-                            double a, double delta, bool bounced) {
+/// The end of an adhesive collision at scaled rate v = delta'/g with the contact's elastic and
+/// surface energies U_E and U_S there (the bulk and crack dissipation already in out.energy). A
+/// break releases what U_E + U_S held (K13's run-away to a = 0, or the jump off an adhesive
+/// branch, is instantaneous, K13 (C.2)): e = -v; sticking grains keep U_E and U_S.
+inline void finish_adhesive(CollisionOutcome& out, const Scales& s, double v, double elastic, double surface,
+                            bool bounced) {
   EnergyBudget& e = out.energy;
   e.initial_kinetic = s.energy;
   e.final_kinetic = s.energy * v * v;  // for sticking: the kinetic energy at the end
   if (bounced) {
     out.outcome = Outcome::bounce;
     out.cor = -v;
-    e.crack_dissipated += models::contact_energy(p, a, delta);
+    e.crack_dissipated += elastic + surface;
   } else {
     out.outcome = Outcome::stick;
     out.cor = 0.0;
-    e.elastic_remaining = contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta);
-    e.surface_remaining = contact::independent::surface_energy(a, p.surface_energy);
+    e.elastic_remaining = elastic;
+    e.surface_remaining = surface;
   }
   e.close();
 }

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "adhesive_outcome.hpp"
+#include "bounce/contact/independent.hpp"
 #include "bounce/contact/jkr.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/dynamics/adhesive_collision.hpp"
@@ -264,7 +265,10 @@ Episode KrijtEpisode::finish() {
   out_.contact_time = t_ * s_.time;
   out_.energy.bulk_dissipated = y_[4] * s_.energy;
   out_.energy.crack_dissipated = y_[3] * s_.energy;
-  detail::finish_adhesive(out_, p_, s_, y_[1], y_[2] * s_.radius, y_[0] * s_.length, out_.outcome == Outcome::bounce);
+  const double a = y_[2] * s_.radius, delta = y_[0] * s_.length;
+  const contact::independent::Geometry g{p_.effective_radius, p_.effective_modulus};
+  detail::finish_adhesive(out_, s_, y_[1], contact::independent::elastic_energy(g, a, delta),
+                          contact::independent::surface_energy(a, p_.surface_energy), out_.outcome == Outcome::bounce);
   episode.outcome = std::move(out_);
   return episode;
 }

@@ -27,17 +27,21 @@ struct Scales {
   double energy;   // (1/2) m g^2
 };
 
-inline Scales scales_for(const models::KrijtParameters& p, double speed) {
+// `release`: the overlap where an adhesive contact breaks (JKR's delta_c, or another branch's fold).
+inline Scales scales_for(const models::KrijtParameters& p, double speed, double release) {
   const double rho = hertz_constant(p.effective_modulus, p.effective_radius);
   const double xi0 = std::pow(1.25 * p.effective_mass * speed * speed / rho, 0.4);  // BP04 (8.65)
   const contact::jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
   Scales s;
-  s.length = std::max(xi0, std::abs(contact::jkr::separation_overlap(j)));
+  s.length = std::max(xi0, std::abs(release));
   s.radius = std::max(std::sqrt(p.effective_radius * xi0), contact::jkr::equilibrium_contact_radius(j));
   s.speed = speed;
   s.time = s.length / speed;
   s.energy = 0.5 * p.effective_mass * speed * speed;
   return s;
+}
+inline Scales scales_for(const models::KrijtParameters& p, double speed) {
+  return scales_for(p, speed, contact::jkr::separation_overlap({p.effective_radius, p.effective_modulus, p.surface_energy}));
 }
 
 // Elastic Hertz contact time in the scaled units (a time scale for budgets and sampling).

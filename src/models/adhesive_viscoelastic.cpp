@@ -116,12 +116,11 @@ Model make_adhesive_viscoelastic(const Pair& pair, const Parameters& p) {
       adhesive_parameters(pair.effective_modulus(), gamma, pair.effective_radius(), pair.effective_mass(), dissipative,
                           dissipative_constant_b(pair, p, dissipative));
   Model m;
-  m.force = make_adhesive_viscoelastic_force(a);
+  m.normal = ForceLaw{make_adhesive_viscoelastic_force(a)};
   m.hertz = HertzScaling{a.rho, a.a};
   m.dissipative_constant = a.a;
   m.viscous_time = detail::viscous_time(pair, p, a.a);
   m.z0 = *p.real("z0");
-  m.adhesion = Adhesion::weak;
   return m;
 }
 

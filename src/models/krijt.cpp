@@ -299,7 +299,7 @@ namespace {
 
 // K13's parameters for the pair: gamma of the pair, T_vis, A (given, or T_vis / nu^2 by
 // K13 after (18)), z0 and k. krijt needs T_vis (its crack law); jkr-viscoelastic A or T_vis.
-Model dynamic_contact(const Pair& pair, const Parameters& p, std::string_view name, bool instantaneous) {
+KrijtParameters k13_parameters(const Pair& pair, const Parameters& p, std::string_view name, bool needs_tvis) {
   KrijtParameters k;
   k.effective_radius = pair.effective_radius();
   k.effective_modulus = pair.effective_modulus();
@@ -307,18 +307,22 @@ Model dynamic_contact(const Pair& pair, const Parameters& p, std::string_view na
   k.surface_energy = detail::adhesive_surface_energy(pair, name);
   if (p.given("tvis")) {
     k.relaxation_time = *p.real("tvis");
-  } else if (!instantaneous || !p.given("A")) {
+  } else if (needs_tvis || !p.given("A")) {
     throw InvalidArgument("tvis", "(not given)", fmt::format("a viscous relaxation time T_vis > 0 s (model {})", name));
   }
   k.dissipative_constant = p.given("A") ? *p.real("A") : krijt_dissipative_constant(k.relaxation_time, pair);
   k.z0 = *p.real("z0");
-  if (!instantaneous) k.k = *p.real("k");
+  if (needs_tvis) k.k = *p.real("k");
+  return k;
+}
+
+// The slots of a model with K13's parameters.
+Model contact_model(const KrijtParameters& k, const Parameters& p, NormalInteraction normal) {
   Model m;
-  m.dynamic_contact = DynamicContact{k, instantaneous};
+  m.normal = std::move(normal);
   m.dissipative_constant = k.dissipative_constant;
   m.viscous_time = p.given("tvis") ? k.relaxation_time : k.dissipative_constant;
   m.z0 = k.z0;
-  m.adhesion = Adhesion::modelled;
   return m;
 }
 
@@ -479,19 +483,22 @@ class KrijtContact final : public CrackContactLaw {
 }  // namespace
 
 std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const Parameters& p) {
-  return std::make_shared<KrijtContact>(dynamic_contact(pair, p, "krijt", false).dynamic_contact->parameters);
+  return std::make_shared<KrijtContact>(k13_parameters(pair, p, "krijt", true));
 }
 
-Model make_krijt(const Pair& pair, const Parameters& p) { return dynamic_contact(pair, p, "krijt", false); }
+Model make_krijt(const Pair& pair, const Parameters& p) {
+  const KrijtParameters k = k13_parameters(pair, p, "krijt", true);
+  return contact_model(k, p, CrackContact{k});
+}
 
 std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const Parameters& p) {
-  const Model m = dynamic_contact(pair, p, "jkr-viscoelastic", true);
-  return std::make_shared<JkrViscoelasticContact>(m.dynamic_contact->parameters,
+  return std::make_shared<JkrViscoelasticContact>(k13_parameters(pair, p, "jkr-viscoelastic", false),
                                                   parse_end_rule(p.text("contact_end")) == EndRule::pull_off);
 }
 
 Model make_jkr_viscoelastic(const Pair& pair, const Parameters& p) {
-  return dynamic_contact(pair, p, "jkr-viscoelastic", true);
+  const KrijtParameters k = k13_parameters(pair, p, "jkr-viscoelastic", false);
+  return contact_model(k, p, AdhesiveContact{k, jkr_geometry(k.effective_radius, k.effective_modulus, k.surface_energy)});
 }
 
 }  // namespace bounce::models

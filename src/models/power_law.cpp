@@ -83,8 +83,7 @@ std::unique_ptr<NormalForceModel> make_power_law_force(const PowerLawParameters&
 Model make_power_law(const Pair& pair, const Parameters& p) {
   const PowerLawParameters law = power_law_parameters(p);
   Model m;
-  m.force = make_power_law_force(law, pair.effective_mass(), pair.effective_radius());
-  m.adhesion = Adhesion::unchecked;
+  m.normal = ForceLaw{make_power_law_force(law, pair.effective_mass(), pair.effective_radius())};
   return m;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
@@ -24,29 +25,99 @@ using namespace catalogue;
 // parameters, factory). To add a model, write src/models/<model>.cpp with its factory
 // (declared in factories.hpp) and add its row here: the CLI, Python and docs/models.md
 // take it from this table.
+// The end rules of the force laws, and of the adhesive models that end where they break.
+Traits force_law(bool master_curve, Adhesion adhesion = Adhesion::negligible) {
+  Traits t;
+  t.master_curve = master_curve;
+  t.convex = master_curve;
+  t.adhesion = adhesion;
+  t.closed_forms.jkr = true;
+  t.end_rules_why = "overlap or force";
+  t.docs = "viscoelastic.md";
+  return t;
+}
+Traits adhesive(Engine engine, Adhesion adhesion, std::vector<EndRule> end_rules, std::string why) {
+  Traits t;
+  t.engine = engine;
+  t.adhesive = true;
+  t.adhesion = adhesion;
+  t.end_rules = std::move(end_rules);
+  t.end_rules_why = std::move(why);
+  t.closed_forms.viscous = true;
+  t.docs = "adhesive.md";
+  return t;
+}
+
+Traits hertz_traits() {
+  Traits t = force_law(true);
+  t.stock_lammps = StockLammps::hertz_material;
+  return t;
+}
+Traits viscoelastic_traits() {
+  Traits t = force_law(true);
+  t.closed_forms.viscous = true;
+  t.analytic = true;
+  t.stock_lammps = StockLammps::hertz_material;
+  t.comparisons = {{5, "viscoelastic + plastic, no adhesion", "A,yield", std::nullopt}};
+  return t;
+}
+Traits shifted_traits() {
+  Traits t = force_law(false);
+  t.convex = true;
+  t.closed_forms.viscous = true;
+  return t;
+}
+Traits adhesive_viscoelastic_traits() {
+  Traits t = adhesive(Engine::force_law, Adhesion::weak, {EndRule::overlap},
+                      "overlap (an adhesive contact ends where it breaks, not where the force first vanishes)");
+  t.closed_forms.jkr = true;
+  t.closed_forms.bp04_weak = true;
+  t.comparisons = {{3, "BP04 quasi-static adhesion, viscous, plastic", "gamma,tvis,yield", std::nullopt}};
+  return t;
+}
+Traits jkr_viscoelastic_traits() {
+  Traits t = adhesive(Engine::adhesive, Adhesion::jkr, {EndRule::overlap, EndRule::fold, EndRule::pull_off},
+                      "overlap (the fold), fold or pull-off");
+  t.closed_forms.jkr = true;
+  t.stock_lammps = StockLammps::jkr;
+  t.comparisons = {{2, "instantaneous JKR crack, bulk damping, plastic", "gamma,tvis,yield", std::nullopt},
+                   {4, "elastic JKR + plastic (K13 Fig 6 dashed)", "gamma,yield", 0.0}};
+  return t;
+}
+Traits krijt_traits() {
+  Traits t = adhesive(Engine::crack, Adhesion::jkr, {EndRule::overlap},
+                      "overlap (an adhesive contact ends where it breaks, here where K13's crack law ends it)");
+  t.closed_forms.jkr = true;
+  t.comparisons = {{1, "K13: adhesion, viscous crack, bulk damping, plastic", "gamma,tvis,yield", std::nullopt}};
+  return t;
+}
+
+// The checked-in table: one row per model (keyword, summary, references, traits, own
+// parameters, factory, what fit fits, DEM laws). To add a model, write src/models/<model>.cpp
+// with its factory (declared in factories.hpp) and add its row here: the CLI, Python and
+// docs/models.md take it from this table.
 std::vector<ModelRow> builtin_rows() {
   return {
-      {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)",
-       Capabilities{.master_curve = true, .convex = true}, {}, &make_hertz, {"yield"}, &hertz_contact},
-      {"viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'",
-       "BP04 (8.42), BSHP96 (24)", Capabilities{.master_curve = true, .convex = true},
-       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic, {"A"}, &viscoelastic_contact},
+      {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)", hertz_traits(), {}, &make_hertz,
+       {"yield"}, &hertz_contact},
+      {"viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'", "BP04 (8.42), BSHP96 (24)",
+       viscoelastic_traits(), {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()},
+       &make_viscoelastic, {"A"}, &viscoelastic_contact},
       {"viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero", "BSHP96 (25)",
-       Capabilities{.convex = true},
-       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()}, &make_viscoelastic_shifted,
-       {"A"}, &viscoelastic_shifted_contact},
-      {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", Capabilities{},
+       shifted_traits(), {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()},
+       &make_viscoelastic_shifted, {"A"}, &viscoelastic_shifted_contact},
+      {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", force_law(false, Adhesion::unchecked),
        {power_d1(), power_alpha(), power_d2(), power_beta(), power_gamma()}, &make_power_law, {}, &power_law_contact},
       {"adhesive-viscoelastic", "BP04's quasi-static adhesive force (8.56) with its dissipation (8.57)",
-       "BP04 (8.56)-(8.58), docs/adhesive.md", Capabilities{.adhesive = true},
+       "BP04 (8.56)-(8.58), docs/adhesive.md", adhesive_viscoelastic_traits(),
        {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time(), dissipative_constant_b(), z0()},
        &make_adhesive_viscoelastic, {"gamma", "tvis", "yield"}, &adhesive_viscoelastic_contact},
       {"jkr-viscoelastic", "contact radius on the JKR equilibrium (instantaneous crack) plus the bulk force",
-       "K13 (8), (9), (19), (20)", Capabilities{.adhesive = true, .dynamic_contact = true},
-       {relaxation_time(), dissipative_constant(), z0()}, &make_jkr_viscoelastic, {"gamma", "tvis", "yield"}, &jkr_viscoelastic_contact},
+       "K13 (8), (9), (19), (20)", jkr_viscoelastic_traits(), {relaxation_time(), dissipative_constant(), z0()},
+       &make_jkr_viscoelastic, {"gamma", "tvis", "yield"}, &jkr_viscoelastic_contact},
       {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
-       "K13 (2), (14)-(21), appendices B, C", Capabilities{.adhesive = true, .dynamic_contact = true, .stiff = true},
-       {relaxation_time(), dissipative_constant(), krijt_z0(), k()}, &make_krijt, {"gamma", "tvis", "yield"}, {}, &krijt_crack_law},
+       "K13 (2), (14)-(21), appendices B, C", krijt_traits(), {relaxation_time(), dissipative_constant(), krijt_z0(), k()},
+       &make_krijt, {"gamma", "tvis", "yield"}, {}, &krijt_crack_law},
   };
 }
 
@@ -79,21 +150,24 @@ ParameterSpec tolerance(std::string name, double lo, double fallback, std::strin
   return with_default(real_parameter(std::move(name), "tolerance", "", open_interval(lo, 1e-3), std::move(help)), fallback);
 }
 
-// What the capabilities add: convex shapes, the integrators' settings.
-std::vector<ParameterSpec> by_capabilities(const Capabilities& c) {
+// What the traits add: convex shapes, the engine's settings.
+std::vector<ParameterSpec> by_traits(bool convex, Engine engine) {
   std::vector<ParameterSpec> out = every_model();
-  if (c.convex) {
+  if (convex) {
     const auto shape = contact::convex::shape_parameters();
     out.insert(out.end(), shape.begin(), shape.end());
   }
-  if (c.dynamic_contact) {
+  if (engine != Engine::force_law) {
     out.push_back(tolerance("adhesive_tolerance", 1e-14, 1e-8,
-                            "relative tolerance of krijt / jkr-viscoelastic integration (default 1e-8)"));
+                            "relative tolerance of the contact models' integration (krijt, jkr-viscoelastic, ...; "
+                            "default 1e-8)"));
   } else {
     out.push_back(tolerance("tolerance", 1e-15, 1e-12,
                             "relative and absolute tolerance of direct integration (default 1e-12)"));
   }
-  if (c.stiff) out.push_back(choice_parameter("stiff_engine", {"rodas", "cvode"}, "krijt: rodas | cvode (default rodas; cvode cross-checks)"));
+  if (engine == Engine::crack) {
+    out.push_back(choice_parameter("stiff_engine", {"rodas", "cvode"}, "krijt: rodas | cvode (default rodas; cvode cross-checks)"));
+  }
   return out;
 }
 
@@ -120,25 +194,12 @@ std::optional<TangentialModel> tangential_model(const Pair& pair, const Paramete
   return t;
 }
 
-// The end rules a model takes: overlap and force for non-adhesive laws; an adhesive contact
-// ends where it breaks, not where the force first vanishes. jkr-viscoelastic's contact breaks at
-// the JKR fold (its `overlap`, or `fold`) or, as LAMMPS ends it, at the pull-off point; krijt's
-// where K13's crack law ends it (`overlap`).
+// The end rule given, if the model declares it (Traits::end_rules).
 EndRule checked_end_rule(const ModelRow& row, const std::string& text) {
   const EndRule rule = parse_end_rule(text);
-  const bool jkr = row.capabilities.dynamic_contact && !row.capabilities.stiff;  // jkr-viscoelastic
-  const bool ok = rule == EndRule::overlap || (rule == EndRule::force && !row.capabilities.adhesive) ||
-                  ((rule == EndRule::fold || rule == EndRule::pull_off) && jkr);
-  if (ok) return rule;
-  std::string allowed = "overlap or force";
-  if (jkr) {
-    allowed = "overlap (the fold), fold or pull-off";
-  } else if (row.capabilities.adhesive) {
-    allowed = "overlap (an adhesive contact ends where it breaks";
-    allowed += row.capabilities.dynamic_contact ? ", here where K13's crack law ends it)"
-                                                : ", not where the force first vanishes)";
-  }
-  throw InvalidArgument("contact_end", text, fmt::format("{} for model {}", allowed, row.name));
+  const auto& rules = row.traits.end_rules;
+  if (std::find(rules.begin(), rules.end(), rule) != rules.end()) return rule;
+  throw InvalidArgument("contact_end", text, fmt::format("{} for model {}", row.traits.end_rules_why, row.name));
 }
 
 }  // namespace
@@ -147,7 +208,10 @@ const ModelRow& ModelRegistry::add(ModelRow row) {
   if (std::any_of(rows_.begin(), rows_.end(), [&](const ModelRow& r) { return r.name == row.name; })) {
     throw InvalidArgument("model", row.name, "a keyword no other model has");
   }
-  for (ParameterSpec& s : by_capabilities(row.capabilities)) row.parameters.push_back(std::move(s));
+  if (row.traits.end_rules.empty() || row.traits.end_rules_why.empty()) {
+    throw std::logic_error("model " + row.name + " declares no end rules");
+  }
+  for (ParameterSpec& s : by_traits(row.traits.convex, row.traits.engine)) row.parameters.push_back(std::move(s));
   for (std::size_t i = 0; i < row.parameters.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (row.parameters[i].name == row.parameters[j].name) {
@@ -158,6 +222,9 @@ const ModelRow& ModelRegistry::add(ModelRow row) {
   rows_.push_back(std::move(row));
   return rows_.back();
 }
+
+// BSHP96's and BP04's model, the one most users of a COR mean.
+const char* ModelRegistry::default_name() { return "viscoelastic"; }
 
 const ModelRow& ModelRegistry::at(std::string_view name) const { return find_named(rows_, name, "model"); }
 
@@ -176,12 +243,6 @@ ModelRegistry& model_registry() {
   return registry;
 }
 
-std::span<const ParameterSpec> shared_model_parameters() {
-  static const std::vector<ParameterSpec> all =
-      by_capabilities(Capabilities{.adhesive = true, .dynamic_contact = true, .stiff = true, .convex = true});
-  return all;
-}
-
 Parameters bind_model_parameters(std::string_view name, const ParameterInputs& inputs) {
   const ModelRow& row = model_registry().at(name);
   return bind_parameters(row.parameters, inputs, fmt::format("model {}", row.name));
@@ -190,8 +251,11 @@ Parameters bind_model_parameters(std::string_view name, const ParameterInputs& i
 Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
   const ModelRow& row = model_registry().at(name);
   Model m = row.factory(pair, p);
+  if (engine_of(m.normal) != row.traits.engine) {
+    throw std::logic_error("model " + row.name + ": its factory made another kind of normal interaction than it declares");
+  }
   m.name = row.name;
-  m.capabilities = row.capabilities;
+  m.traits = row.traits;
   m.end_rule = checked_end_rule(row, p.text("contact_end"));
   m.yield_strength = p.real("yield");
   m.tangential = tangential_model(pair, p);

@@ -37,7 +37,7 @@ class ViscoelasticForce final : public detail::HertzTypeForce {
 Model hertz_type(const Pair& pair, const Parameters& p, double a, std::string_view name) {
   Model m;
   const HertzGeometry geometry = detail::hertz_geometry(pair, detail::curvatures(pair, p));
-  m.force = make_viscoelastic_force(geometry, a, name);
+  m.normal = ForceLaw{make_viscoelastic_force(geometry, a, name)};
   m.hertz = HertzScaling{geometry.force_constant, a};
   return m;
 }

@@ -47,7 +47,7 @@ Model make_viscoelastic_shifted(const Pair& pair, const Parameters& p) {
   const double a = detail::dissipative_constant(pair, p, "viscoelastic-shifted");
   const HertzGeometry geometry = detail::hertz_geometry(pair, detail::curvatures(pair, p));
   Model m;
-  m.force = make_shifted_viscoelastic_force(geometry, a);
+  m.normal = ForceLaw{make_shifted_viscoelastic_force(geometry, a)};
   m.hertz = HertzScaling{geometry.force_constant, a};
   m.dissipative_constant = a;
   m.viscous_time = detail::viscous_time(pair, p, a);

@@ -48,13 +48,17 @@ struct CommandSpec {
   bool takes_pair = false;
   bool takes_model = false;
   std::vector<ParameterSpec> parameters;  ///< its own
-  std::vector<std::string> models = {};   ///< the models it works with (empty: every model)
+  std::vector<std::string> models = {};   ///< the models it works with (empty: every model), from their traits
   std::string models_why = {};            ///< ... and why only those
+  std::string default_model = {};         ///< empty: the registry's default (models::ModelRegistry::default_name)
   std::vector<Unused> unused = {};        ///< models' parameters it never uses (not offered, refused)
 };
 const std::vector<CommandSpec>& commands();
 /// InvalidArgument("command", name, "one of …") for an unknown command.
 const CommandSpec& command(std::string_view name);
+
+/// The model a command uses when the inputs name none.
+std::string default_model(const CommandSpec& command);
 
 /// The spec of "model" (the keyword), "law" (the contact law).
 ParameterSpec model_parameter();

@@ -4,14 +4,15 @@
 
 #include "bounce/dynamics/integration.hpp"
 #include "bounce/dynamics/outcome.hpp"
+#include "bounce/models/adhesive_geometry.hpp"
 #include "bounce/models/krijt.hpp"
 
 namespace bounce::dynamics {
 
-/// Where a jkr-viscoelastic contact breaks: at the JKR fold delta_c (the end K13 (25) assumes,
-/// `contact_end fold`) or at the pull-off point, where the force reaches -(3/2) pi gamma R
-/// (`contact_end pull-off`, as LAMMPS's pair granular jkr ends it).
-enum class AdhesiveRelease { fold, pull_off };
+/// Where a contact held on its adhesive branch breaks: at the fold (the end K13 (25) assumes for
+/// JKR, `contact_end fold`) or at the pull-off point (`contact_end pull-off`, as LAMMPS's pair
+/// granular jkr ends it).
+using AdhesiveRelease = models::AdhesiveRelease;
 
 struct AdhesiveCollisionOptions {
   /// Relative tolerance (scaled units) of the stiff engine (krijt) and, times 1e-2, of
@@ -28,7 +29,7 @@ struct AdhesiveCollisionOptions {
   /// speed diverges at 1/k, and the rest of the run-away is instantaneous.
   double break_margin = models::krijt_break_margin;
   StiffEngine engine = StiffEngine::rodas;  ///< krijt only (jkr-viscoelastic is not stiff)
-  AdhesiveRelease release = AdhesiveRelease::fold;  ///< jkr-viscoelastic only
+  AdhesiveRelease release = AdhesiveRelease::fold;  ///< the adhesive-branch engine only
 };
 
 /// K13: delta, delta', a and the two dissipations integrated by the stiff engine (RODAS,
@@ -42,10 +43,18 @@ CollisionOutcome integrate_krijt_collision(const models::KrijtParameters& p, dou
 /// Preconditions of both (checked once, by the model registry and analysis::collide):
 /// parameters of models::make_model, speed > 0 and finite.
 ///
-/// The same equations with a on the JKR equilibrium (beta = 1, an instantaneous
-/// crack) plus the bulk force (19): snap-on to the JKR radius at delta = 0, release
-/// at the JKR separation overlap delta_c (or the pull-off point, options.release).
-/// Integrated with dopri5 (not stiff).
+/// A contact held on an adhesive equilibrium branch (an instantaneous crack) with the bulk force
+/// K13 (19), F_D = 2 A E* a delta': m delta'' = -(F_E(delta) + F_D), a and F_E from the geometry.
+/// The pair snaps onto the branch at the geometry's snap overlap and leaves it at its release
+/// (options.release); the energies dissipated there are crack_dissipated, the bulk force's
+/// bulk_dissipated. Sticking: the mechanical energy below the contact's energy at the release
+/// (it never increases). Integrated with dopri5 (not stiff). p gives m*, E*, A (and R, gamma for
+/// the scales).
+CollisionOutcome integrate_adhesive_collision(const models::KrijtParameters& p, const models::AdhesiveGeometry& geometry,
+                                              double speed, const AdhesiveCollisionOptions& options = {});
+
+/// K13's equations with a on the JKR equilibrium (beta = 1): integrate_adhesive_collision on JKR's
+/// branch (snap-on at delta = 0, release at delta_c or the pull-off point).
 CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParameters& p, double speed,
                                                       const AdhesiveCollisionOptions& options = {});
 

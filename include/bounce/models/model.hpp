@@ -1,12 +1,22 @@
 #pragma once
-// A collision model configured for one pair: what a registry row's factory makes from
-// validated parameters (registry.hpp), and all that the engines (dynamics) and the analysis
-// need from it. Physics only: no engine, no output format.
+// A collision model: what it declares about itself (Traits, one per registry row) and what it is
+// once configured for a pair (Model: its normal interaction as one of three typed kinds, plus the
+// slots every model has). Physics only: no engine, no output format.
+//
+// The three kinds of normal interaction, each with its own engine (dynamics/):
+//   ForceLaw         a force F(xi, xi') (normal_force.hpp): dopri5 with event location, or the
+//                    master curves where the model declares them
+//   AdhesiveContact  a contact held on an adhesive equilibrium branch (adhesive_geometry.hpp: JKR,
+//                    Maugis-Dugdale) with the bulk damping of K13 (19): dopri5
+//   CrackContact     K13's contact whose radius moves by its crack law (krijt.hpp): the stiff engine
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
+#include <vector>
 
+#include "bounce/models/adhesive_geometry.hpp"
 #include "bounce/models/end_rule.hpp"
 #include "bounce/models/krijt.hpp"
 #include "bounce/models/normal_force.hpp"
@@ -14,30 +24,64 @@
 
 namespace bounce::models {
 
-/// What a model can do; the registry derives from it which shared parameters the model
-/// takes (registry.hpp) and the analysis which methods and checks apply.
-struct Capabilities {
-  bool adhesive = false;         ///< needs gamma; the outcome can be "stick"
-  bool dynamic_contact = false;  ///< the contact radius is integrated (K13), not a function of the overlap
-  bool master_curve = false;     ///< the viscoelastic master curves e(kappa) apply (method=master)
-  bool stiff = false;            ///< integrated by the stiff engine (stiff_engine = rodas | cvode)
-  bool convex = false;           ///< general convex bodies (curvature radii) change its force constant
+/// How a model's collision is integrated; the configured Model's normal interaction is of the
+/// matching kind (make_model checks it).
+enum class Engine {
+  force_law,  ///< ForceLaw
+  adhesive,   ///< AdhesiveContact
+  crack,      ///< CrackContact
 };
 
-/// K13's dynamic contact: contact radius a and approach delta integrated together.
-struct DynamicContact {
-  KrijtParameters parameters;
-  /// a held on the JKR equilibrium (jkr-viscoelastic, the fast-crack limit) instead of
-  /// following K13's crack law (krijt).
-  bool instantaneous_crack = false;
-};
-
-/// What a model assumes about adhesion: which validity warnings and closed forms apply.
+/// What a model assumes about adhesion: which validity checks its collisions carry.
 enum class Adhesion {
   unchecked,   ///< no Hertz geometry to compare with (power-law)
   negligible,  ///< left out; BP04 (8.99) says when that holds
   weak,        ///< BP04's quasi-static estimate, (8.56)-(8.58) with (8.95)-(8.101)
-  modelled,    ///< JKR contact dynamics (K13)
+  jkr,         ///< JKR's contact (K13): the Tabor parameter must be > 5 (K13 §2.1.2)
+  maugis,      ///< Maugis-Dugdale's contact: any Tabor parameter
+};
+
+/// The closed forms shown beside a model's collision (analysis::closed_forms; yield's and the
+/// Hertz time are every model's).
+struct ClosedFormSet {
+  bool jkr = false;        ///< with a gamma: K13 (24), (25), JKR's sticking velocity, the Tabor parameter
+  bool viscous = false;    ///< with the model's A: K13 (26), (27)
+  bool bp04_weak = false;  ///< BP04 (8.95), (8.98)
+};
+
+/// How `bounce lammps` writes the model as stock pair_style granular.
+enum class StockLammps {
+  none,            ///< it cannot
+  hertz_material,  ///< hertz/material with damping viscoelastic
+  jkr,             ///< jkr with damping viscoelastic
+};
+
+/// A line of K13 Fig 6's comparison of mechanisms (`bounce fit --compare`): this model, fitting
+/// `fit`, with A held at `dissipative_constant` where given; lines are listed by `rank`.
+struct Comparison {
+  int rank = 0;
+  std::string label;
+  std::string fit;
+  std::optional<double> dissipative_constant;
+};
+
+/// What a model declares about itself (its registry row's): the analysis, the front door and the
+/// front ends read it, and nothing infers it from anything else.
+struct Traits {
+  Engine engine = Engine::force_law;
+  /// The contact_end rules it takes; the first is the default.
+  std::vector<EndRule> end_rules = {EndRule::overlap, EndRule::force};
+  /// Why the other rules are not taken (the end of a refusal's "expected ...").
+  std::string end_rules_why;
+  Adhesion adhesion = Adhesion::negligible;
+  ClosedFormSet closed_forms;
+  bool adhesive = false;      ///< needs gamma; the outcome can be "stick"
+  bool master_curve = false;  ///< BP04's master curves e(kappa) apply (method master)
+  bool convex = false;        ///< general convex bodies (curvature radii) change its force constant
+  bool analytic = false;      ///< BP04 §8.3's closed forms (`bounce analytic`) are derived for it
+  StockLammps stock_lammps = StockLammps::none;
+  std::vector<Comparison> comparisons;
+  std::string docs;           ///< the docs page of its physics (docs/<page>)
 };
 
 /// The constants of BP04's dimensional analysis for a Hertz-type force (§8.3): kappa (8.70),
@@ -47,13 +91,26 @@ struct HertzScaling {
   double dissipative_constant = 0.0;  ///< A [s]
 };
 
-struct Model {
-  std::string name;           ///< the registry keyword
-  Capabilities capabilities;  ///< as the row declares them
-
-  // The normal interaction: a force law (most models) or K13's dynamic contact.
+/// The normal interaction of each kind.
+struct ForceLaw {
   std::shared_ptr<const NormalForceModel> force;
-  std::optional<DynamicContact> dynamic_contact;
+};
+struct AdhesiveContact {
+  KrijtParameters parameters;  ///< the pair (R, E*, m*, gamma) and the bulk damping A of K13 (19)
+  std::shared_ptr<const AdhesiveGeometry> geometry;
+};
+struct CrackContact {
+  KrijtParameters parameters;
+};
+using NormalInteraction = std::variant<ForceLaw, AdhesiveContact, CrackContact>;
+/// The engine a normal interaction is integrated by.
+Engine engine_of(const NormalInteraction& normal);
+
+struct Model {
+  std::string name;  ///< the registry keyword
+  Traits traits;     ///< as the row declares them
+
+  NormalInteraction normal;
 
   // The slots every model has (the registry fills them from the shared parameters).
   EndRule end_rule = EndRule::overlap;
@@ -65,7 +122,11 @@ struct Model {
   std::optional<double> dissipative_constant;  ///< A [s], where the model has one
   double viscous_time = 0.0;   ///< viscous relaxation time, for BSHP96 (B12) / BP04 (8.26)
   double z0 = 0.2e-9;          ///< equilibrium separation [m] of the Tabor parameter K13 (11)
-  Adhesion adhesion = Adhesion::negligible;
+
+  /// The force law (ForceLaw models), else nullptr.
+  const NormalForceModel* force_law() const;
+  /// K13's parameters of a contact model (AdhesiveContact, CrackContact), else nullptr.
+  const KrijtParameters* contact_parameters() const;
 };
 
 }  // namespace bounce::models

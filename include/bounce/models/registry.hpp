@@ -4,13 +4,14 @@
 // type stubs and docs/models.md are generated from these rows).
 //
 // One keyword <-> one row <-> one factory, in the file of its physics (src/models/*.cpp:
-// hertz with viscoelastic, jkr-viscoelastic with krijt). A row
-// declares the model's own parameters; the registry adds the parameters every model shares
-// (contact_end, yield, the tangential law, method) and those its capabilities call for
-// (curvature radii for convex bodies; tolerance for force laws; adhesive_tolerance and
-// stiff_engine for the K13 engines). To add a model: write its file with a factory that
-// turns validated parameters into a Model (model.hpp), declare the factory in
-// src/models/factories.hpp and add its row to the table in src/models/registry.cpp (or, outside the library, model_registry().add(row)).
+// hertz with viscoelastic, jkr-viscoelastic with krijt). A row declares what the model is
+// (Traits: its engine, end rules, adhesion checks, closed forms, ...) and its own parameters;
+// the registry adds the parameters every model shares (contact_end, yield, the tangential law,
+// method) and those its traits call for (curvature radii for convex bodies; tolerance for force
+// laws; adhesive_tolerance for the contact engines, stiff_engine for the crack's). To add a
+// model: write its file with a factory that turns validated parameters into a Model (model.hpp),
+// declare the factory in src/models/factories.hpp and add its row to the table in
+// src/models/registry.cpp (or, outside the library, model_registry().add(row)).
 
 #include <deque>
 #include <functional>
@@ -38,7 +39,7 @@ struct ModelRow {
   std::string name;        ///< the keyword (`--model NAME`, `bounce.Model(NAME)`)
   std::string summary;     ///< one line
   std::string references;  ///< equations it implements
-  Capabilities capabilities;
+  Traits traits;
   std::vector<ParameterSpec> parameters;  ///< the model's own, then (after add) the shared ones
   ModelFactory factory;
   /// What `bounce fit` fits by default (parameters with a fit grid: the model's, the shared
@@ -60,6 +61,17 @@ class ModelRegistry {
   const ModelRow& at(std::string_view name) const;
   const std::deque<ModelRow>& rows() const noexcept { return rows_; }
   std::vector<std::string> names() const;
+  /// The model a command uses when none is named.
+  static const char* default_name();
+  /// The rows whose traits satisfy `pred`, by name, in the table's order.
+  template <class Pred>
+  std::vector<std::string> names_where(Pred pred) const {
+    std::vector<std::string> out;
+    for (const ModelRow& row : rows_) {
+      if (pred(row)) out.push_back(row.name);
+    }
+    return out;
+  }
 
  private:
   std::deque<ModelRow> rows_;  // a deque: rows stay where they are when one is added
@@ -67,9 +79,6 @@ class ModelRegistry {
 
 /// The registry, holding the checked-in table from the first call on.
 ModelRegistry& model_registry();
-
-/// The parameters every model shares, and those that capabilities add.
-std::span<const ParameterSpec> shared_model_parameters();
 
 /// `inputs` checked against the parameters of model `name` (an input the model does not
 /// take is an InvalidArgument naming it).

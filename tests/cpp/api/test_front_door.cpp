@@ -35,18 +35,24 @@ class LinearSpring final : public models::NormalForceModel {
   double k_, c_, m_, r_;
 };
 
-// The one row: keyword, summary, references, capabilities, parameters, factory.
+// The one row: keyword, summary, references, traits, parameters, factory.
+models::Traits toy_traits() {
+  models::Traits t;
+  t.adhesion = models::Adhesion::unchecked;
+  t.end_rules_why = "overlap or force";
+  return t;
+}
+
 const models::ModelRow& register_toy() {
   static const models::ModelRow& row = models::model_registry().add(models::ModelRow{
-      "test-linear-spring", "linear spring-dashpot (test only)", "Cundall & Strack (1979)", models::Capabilities{},
+      "test-linear-spring", "linear spring-dashpot (test only)", "Cundall & Strack (1979)", toy_traits(),
       {real_parameter("stiffness", "spring stiffness k", "N/m", positive(), "spring stiffness k [N/m]"),
        real_parameter("damping", "dashpot c", "N s/m", non_negative(), "dashpot c [N s/m]")},
       [](const Pair& pair, const Parameters& p) {
         models::Model m;
-        m.force = std::make_shared<LinearSpring>(p.require_real("stiffness", "a stiffness k > 0 N/m"),
-                                                 p.real("damping").value_or(0.0), pair.effective_mass(),
-                                                 pair.effective_radius());
-        m.adhesion = models::Adhesion::unchecked;
+        m.normal = models::ForceLaw{std::make_shared<LinearSpring>(p.require_real("stiffness", "a stiffness k > 0 N/m"),
+                                                                   p.real("damping").value_or(0.0), pair.effective_mass(),
+                                                                   pair.effective_radius())};
         return m;
       }});
   return row;

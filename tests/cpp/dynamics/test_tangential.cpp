@@ -3,6 +3,7 @@
 // BSHP96 §III's: ice spheres E = 10 GPa, nu = 0.3, R = 1 cm, rho = 1000 kg/m^3, with
 // A = 1 us; mu = sqrt(zeta0 / R_eff) (alpha = 1).
 #include <cmath>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -45,7 +46,7 @@ models::TangentialModel asperity(double zeta0_over_r, AsperityForm form = Asperi
 }
 
 dynamics::TangentialCollision oblique(double gn, double gt, const models::TangentialModel& t) {
-  const auto force = viscoelastic().force;
+  const auto force = std::get<models::ForceLaw>(viscoelastic().normal).force;
   return dynamics::integrate_tangential_collision(*force, bshp96().effective_mass(), gn, gt, t);
 }
 
@@ -179,7 +180,7 @@ TEST(Tangential, DenseBreaking) {
 // sliding (gamma_s large) gives Delta g^T = -mu (1 + eps^N) g^N / kappa; pure viscous drag
 // (mu large) gives eps^T = exp(-gamma_s t_c / kappa). Both to 1e-9 (integration error).
 TEST(Tangential, StepLawLimits) {
-  const auto force = viscoelastic("force").force;
+  const auto force = std::get<models::ForceLaw>(viscoelastic("force").normal).force;
   dynamics::NormalCollisionOptions o;
   o.end_rule = models::EndRule::force;
   models::TangentialModel step;
@@ -201,7 +202,7 @@ TEST(Tangential, StepLawLimits) {
 // theirs) agrees with the coupled integration to the interpolation error of F^N (2e-6
 // measured, where the breaks make it most sensitive).
 TEST(Tangential, DrivenByRecordedForceAgreesWithCoupled) {
-  const auto force = viscoelastic().force;
+  const auto force = std::get<models::ForceLaw>(viscoelastic().normal).force;
   dynamics::NormalCollisionOptions o;
   o.record_trajectory = true;
   o.trajectory_points = 4000;
@@ -222,7 +223,7 @@ TEST(Tangential, DrivenByRecordedForceAgreesWithCoupled) {
 // moved with the tolerance (by 1.8e-4 relative between 1e-8 and 1e-12; with it 1e-8).
 TEST(Tangential, BreakThresholdIndependentOfTolerance) {
   const auto t = asperity(2e-4);
-  const auto force = viscoelastic().force;
+  const auto force = std::get<models::ForceLaw>(viscoelastic().normal).force;
   auto threshold = [&](double tol) {
     dynamics::NormalCollisionOptions o;
     o.integration.relative_tolerance = tol;

@@ -59,9 +59,9 @@ TEST(ContactLaw, EqualsTheModelsForceForItsPair) {
     const models::ContactGeometry g{pair.effective_radius(), pair.effective_mass()};
     for (double xi : {0.0, 1e-9, 3e-7, 2e-5}) {
       for (double rate : {-0.7, 0.0, 0.4}) {
-        EXPECT_EQ(dem.normal->force(g, xi, rate), model.force->force(xi, rate)) << xi << " " << rate;
+        EXPECT_EQ(dem.normal->force(g, xi, rate), model.force_law()->force(xi, rate)) << xi << " " << rate;
       }
-      EXPECT_EQ(dem.normal->energy(g, xi), model.force->elastic_energy(xi)) << xi;
+      EXPECT_EQ(dem.normal->energy(g, xi), model.force_law()->elastic_energy(xi)) << xi;
     }
     EXPECT_EQ(dem.normal->release_overlap(g), 0.0);
   }

@@ -45,7 +45,7 @@ inline Accuracy stated_accuracy(const models::Model& model, const dynamics::Coll
     // four terms no larger than the initial energy, a few ulps of it (1e-15).
     return {1e-10, 1e-10, 1e-15};
   }
-  if (model.capabilities.adhesive) {
+  if (model.traits.adhesive) {
     // docs/adhesive.md: "COR errors <= 2e-9 for T_vis = 1e-16-1e-8 s" (krijt at the default
     // adhesive tolerance 1e-8; jkr-viscoelastic "to 1e-9"), the contact dynamics to that
     // relative tolerance 1e-8; the budget "closes to 1e-5 of the impact energy", the pass

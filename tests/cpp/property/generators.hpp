@@ -201,7 +201,7 @@ inline void showValue(const ModelCase& c, std::ostream& os) { os << c.name << de
 /// where it breaks: they take overlap only).
 inline std::optional<rc::Gen<ModelCase>> model_parameters(const std::string& name, const Pair& pair, double lo,
                                                           double hi) {
-  const bool adhesive = models::model_registry().at(name).capabilities.adhesive;
+  const bool adhesive = models::model_registry().at(name).traits.adhesive;
   const auto end_rule = adhesive ? rc::gen::just(std::string("overlap"))
                                  : rc::gen::element(std::string("overlap"), std::string("force"));
   const auto with_end = [end_rule, name](rc::Gen<ParameterInputs> g) {

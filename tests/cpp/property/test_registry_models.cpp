@@ -36,7 +36,7 @@ std::vector<ModelCase> every_model(const Pair& pair, double speed) {
 // The methods a model offers: its default, and direct integration where the default is
 // the master curve (both are what a user gets).
 std::vector<std::string> methods(const ModelCase& c) {
-  if (models::model_registry().at(c.name).capabilities.master_curve) return {"auto", "integrate"};
+  if (models::model_registry().at(c.name).traits.master_curve) return {"auto", "integrate"};
   return {"auto"};
 }
 
@@ -82,7 +82,7 @@ RC_GTEST_PROP(RegistryModels, RestitutionInUnitIntervalAndNoEnergyCreated, ()) {
       require_within(e.bulk_dissipated, 0.0, HUGE_VAL, who + " bulk_dissipated [J]");
       require_within(e.crack_dissipated, 0.0, HUGE_VAL, who + " crack_dissipated [J]");
       require_within(e.plastic_dissipated, 0.0, HUGE_VAL, who + " plastic_dissipated [J]");
-      if (!models::model_registry().at(c.name).capabilities.adhesive) {
+      if (!models::model_registry().at(c.name).traits.adhesive) {
         // Without adhesion the stored energy is elastic, >= 0. (An adhesive law's potential,
         // BP04 (8.56), includes the negative surface part.)
         require_within(e.elastic_remaining, 0.0, HUGE_VAL, who + " elastic_remaining [J]");

@@ -27,7 +27,7 @@ constexpr int lookups_per_table = 4;
 std::vector<std::string> non_adhesive_force_laws() {
   std::vector<std::string> out;
   for (const models::ModelRow& row : models::model_registry().rows()) {
-    if (!row.capabilities.adhesive && !row.capabilities.dynamic_contact) out.push_back(row.name);
+    if (!row.traits.adhesive && row.traits.engine == models::Engine::force_law) out.push_back(row.name);
   }
   return out;
 }
