@@ -8,7 +8,8 @@
     * a contact that forms inside the step, phi dt before t_n, gets the impulse of its force over
       that time by Simpson's rule, plus F_n dt/2: phi (F_0 + 4 F_m + F_n)/6 + F_n/2, with F_0 at
       first touch (JKR's snap-on, viscoelastic-shifted's C0 (A xi')^{3/2}; 0 for Hertz) and F_m
-      at half the overlap;
+      half-way; a law whose contact forms before touching (Maugis-Dugdale's snap-on at -h0) forms
+      it at its snap overlap instead of 0;
     * a contact that ends inside the step, theta dt after t_{n-1}, gets the impulse of its force
       from the last overlap to the release overlap by Simpson's rule, less the F_{n-1} dt/2 the
       last step already gave: theta (F_{n-1} + 4 F_m + F_r)/6 - F_{n-1}/2.
@@ -281,7 +282,8 @@ ContactForce contact_step(const models::DemModel& law, const models::ContactGeom
   if (law.crack) return crack_step(law, g, k, s, touch, history);
   ContactForce out;
   const bool touching = touch != 0;
-  const bool contact = k.overlap > 0.0 || (touching && k.overlap > release);
+  const double snap = law.normal->snap_overlap(g);  // where a contact forms (0: touching)
+  const bool contact = k.overlap > snap || (touching && k.overlap > release);
   const double before = k.overlap + s.dt * k.vn;  // the overlap at the step before
   if (!contact) {
     if (touching && s.corrected) {  // released inside the step, theta dt after the last one
@@ -302,10 +304,10 @@ ContactForce contact_step(const models::DemModel& law, const models::ContactGeom
   if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(g.effective_mass * k.overlap / fn) / s.dt;
   tangential(law, g, k, s, fn, touching ? previous : fn, history, out);
   out.normal = fn;
-  if (s.corrected && !touching) {  // formed inside the step, phi dt before now (or overlapping already)
-    const double phi = before < 0.0 ? k.overlap / (k.overlap - before) : 1.0;
-    const double first = normal_force(law, g, inside * k.overlap, rate);
-    const double middle = normal_force(law, g, 0.5 * k.overlap, rate);
+  if (s.corrected && !touching) {  // formed inside the step, phi dt before now (or within reach already)
+    const double phi = before < snap ? (k.overlap - snap) / (k.overlap - before) : 1.0;
+    const double first = normal_force(law, g, snap + inside * (k.overlap - snap), rate);
+    const double middle = normal_force(law, g, 0.5 * (snap + k.overlap), rate);
     out.normal = phi * (first + 4.0 * middle + fn) / 6.0 + 0.5 * fn;
   }
   return out;

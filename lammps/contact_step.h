@@ -55,7 +55,8 @@ struct ContactForce {
   bool finite() const;
 };
 
-/// The force of a contact that exists (overlap > 0, or touching and overlap > release, with
+/// The force of a contact that exists (overlap > the law's snap overlap, 0 but for a contact that
+/// forms before touching, or touching and overlap > release, with
 /// release = law.normal->release_overlap(g)) or has just ended inside this step (touching and
 /// not beyond release; with `corrected` it then still gets its impulse's correction). Updates
 /// `touch` and the history (cleared when the contact ends). A crack law (law.crack) ends its

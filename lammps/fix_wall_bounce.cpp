@@ -102,6 +102,8 @@ void FixWallBounce::post_force(int)
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
   const bounce::models::DemModel &law = *law_;
+  // Does the law's contact form before touching (Maugis-Dugdale's zone)?
+  const bool snaps = law.snap_overlap(bounce::models::ContactGeometry{1.0, 1.0}) < 0.0;
 
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -116,10 +118,11 @@ void FixWallBounce::post_force(int)
         for (int m = 0; m < values; m++) slot[m] = 0.0;
         continue;
       }
-      if (!touch && overlap <= 0.0) continue;
+      if (!touch && overlap <= 0.0 && !snaps) continue;
       bounce::models::ContactGeometry g;
       g.effective_radius = radius[i];  // a flat wall
       g.effective_mass = rmass[i];     // an immovable one
+      if (!touch && snaps && overlap <= law.snap_overlap(g)) continue;  // out of the zone's reach
       bounce::lammps::Kinematics k;
       k.n[0] = k.n[1] = k.n[2] = 0.0;
       k.n[axis_] = sign;

@@ -45,6 +45,7 @@ const char *const history_id = "NEIGH_HISTORY_BOUNCE";
 struct PairBounce::TypePair {
   bounce::models::DemModel law;
   std::string inputs;
+  bool snaps = false;  // its contacts form before touching (Maugis-Dugdale's zone)
 };
 
 PairBounce::PairBounce(LAMMPS *instance) : Pair(instance), fix_history_(nullptr)
@@ -154,6 +155,7 @@ void PairBounce::coeff(int narg, char **arg)
   // that finds the pair apart (FixNeighHistory keeps it then only with beyond_contact).
   const bounce::models::ContactGeometry unit{1.0, 1.0};
   if (entry->law.release_overlap(unit) < 0.0) beyond_contact = 1;
+  entry->snaps = entry->law.snap_overlap(unit) < 0.0;
 
   const int n = atom->ntypes;
   int count = 0;
@@ -295,11 +297,14 @@ void PairBounce::compute(int eflag, int vflag)
       double *history = &all_history[history_values_ * jj];
       // No contact, none before: its history is zero already (FixNeighHistory zeroes a new pair's,
       // and contact_step an ended contact's), and is left alone (up to 12 values a neighbour).
-      if (!touch[jj] && rsq >= radsum * radsum) continue;
-      const bounce::models::DemModel &law = *this->law(type[i], type[j]);
+      // A law whose contact forms before touching (snap_overlap < 0) is asked where.
+      const TypePair &entry = *laws_[type[i] * (atom->ntypes + 1) + type[j]];
+      if (!touch[jj] && rsq >= radsum * radsum && !entry.snaps) continue;
+      const bounce::models::DemModel &law = entry.law;
       bounce::models::ContactGeometry g;
       g.effective_radius = radius[i] * radius[j] / radsum;
       g.effective_mass = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      if (!touch[jj] && entry.snaps && radsum - std::sqrt(rsq) <= law.snap_overlap(g)) continue;
       if (rsq == 0.0)
         error->one(FLERR, "pair_style bounce: atoms {} and {} are at the same place (no contact normal)", atom->tag[i],
                    atom->tag[j]);

@@ -16,6 +16,7 @@ Model make_power_law(const Pair& pair, const Parameters& p);              // pow
 Model make_adhesive_viscoelastic(const Pair& pair, const Parameters& p);  // adhesive_viscoelastic.cpp
 Model make_jkr_viscoelastic(const Pair& pair, const Parameters& p);       // krijt.cpp
 Model make_krijt(const Pair& pair, const Parameters& p);                  // krijt.cpp
+Model make_maugis_viscoelastic(const Pair& pair, const Parameters& p);    // maugis_viscoelastic.cpp
 
 // The same models as DEM contact laws (contact_law.hpp), in the same files; krijt has none yet.
 std::shared_ptr<const ContactLaw> hertz_contact(const Pair& pair, const Parameters& p);
@@ -25,5 +26,6 @@ std::shared_ptr<const ContactLaw> power_law_contact(const Pair& pair, const Para
 std::shared_ptr<const ContactLaw> adhesive_viscoelastic_contact(const Pair& pair, const Parameters& p);
 std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const Parameters& p);
 std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const Parameters& p);
+std::shared_ptr<const ContactLaw> maugis_viscoelastic_contact(const Pair& pair, const Parameters& p);
 
 }  // namespace bounce::models

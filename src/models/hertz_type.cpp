@@ -92,4 +92,37 @@ double adhesive_surface_energy(const Pair& pair, std::string_view model) {
   return require_positive("gamma", gamma, fmt::format("surface energy gamma [J/m^2] ({} needs gamma > 0)", who));
 }
 
+// K13's parameters for the pair: gamma of the pair, T_vis, A (given, or T_vis / nu^2 by
+// K13 after (18)), z0 and k. krijt needs T_vis (its crack law); jkr-viscoelastic A or T_vis.
+KrijtParameters contact_parameters(const Pair& pair, const Parameters& p, std::string_view name, bool needs_tvis) {
+  KrijtParameters k;
+  k.effective_radius = pair.effective_radius();
+  k.effective_modulus = pair.effective_modulus();
+  k.effective_mass = pair.effective_mass();
+  k.surface_energy = adhesive_surface_energy(pair, name);
+  if (p.given("tvis")) {
+    k.relaxation_time = *p.real("tvis");
+  } else if (needs_tvis || !p.given("A")) {
+    throw InvalidArgument("tvis", "(not given)", fmt::format("a viscous relaxation time T_vis > 0 s (model {})", name));
+  }
+  k.dissipative_constant = p.given("A") ? *p.real("A") : krijt_dissipative_constant(k.relaxation_time, pair);
+  k.z0 = *p.real("z0");
+  if (needs_tvis) k.k = *p.real("k");
+  return k;
+}
+
+// The slots of a model with K13's parameters.
+Model contact_model(const KrijtParameters& k, const Parameters& p, NormalInteraction normal) {
+  Model m;
+  m.normal = std::move(normal);
+  m.dissipative_constant = k.dissipative_constant;
+  m.viscous_time = p.given("tvis") ? k.relaxation_time : k.dissipative_constant;
+  m.z0 = k.z0;
+  return m;
+}
+
+AdhesiveRelease adhesive_release(const Parameters& p) {
+  return parse_end_rule(p.text("contact_end")) == EndRule::pull_off ? AdhesiveRelease::pull_off : AdhesiveRelease::fold;
+}
+
 }  // namespace bounce::models::detail

@@ -8,6 +8,8 @@
 #include "bounce/core/parameters.hpp"
 #include "bounce/contact/hertz.hpp"
 #include "bounce/models/contact_law.hpp"
+#include "bounce/models/krijt.hpp"
+#include "bounce/models/model.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "bounce/pair/mixing.hpp"
 #include "bounce/pair/pair.hpp"
@@ -64,5 +66,14 @@ HertzGeometry hertz_geometry(const Pair& pair, const std::optional<contact::conv
 
 /// The pair's gamma, which adhesive models need > 0.
 double adhesive_surface_energy(const Pair& pair, std::string_view model);
+
+/// K13's parameters of a contact model for the pair: gamma (> 0), T_vis (required with
+/// `needs_tvis`, else T_vis or A), A (given, or T_vis / nu^2 by K13 after (18)), z0, and k
+/// (with `needs_tvis`: the crack law's).
+KrijtParameters contact_parameters(const Pair& pair, const Parameters& p, std::string_view model, bool needs_tvis);
+/// A contact model with those parameters and its normal interaction (A, viscous time, z0 set).
+Model contact_model(const KrijtParameters& k, const Parameters& p, NormalInteraction normal);
+/// Where a contact held on its adhesive branch breaks, by contact_end (pull-off, else the fold).
+AdhesiveRelease adhesive_release(const Parameters& p);
 
 }  // namespace bounce::models::detail

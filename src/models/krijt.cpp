@@ -17,6 +17,8 @@
 #include "bounce/core/error.hpp"
 #include "bounce/models/crack.hpp"
 #include "factories.hpp"
+#include "adhesive_contact_law.hpp"
+#include "adhesive_geometries.hpp"
 #include "hertz_type.hpp"
 
 namespace bounce::models {
@@ -297,68 +299,6 @@ double krijt_release_overlap(const KrijtParameters& p) {  // K13 (14) at its lea
 
 namespace {
 
-// K13's parameters for the pair: gamma of the pair, T_vis, A (given, or T_vis / nu^2 by
-// K13 after (18)), z0 and k. krijt needs T_vis (its crack law); jkr-viscoelastic A or T_vis.
-KrijtParameters k13_parameters(const Pair& pair, const Parameters& p, std::string_view name, bool needs_tvis) {
-  KrijtParameters k;
-  k.effective_radius = pair.effective_radius();
-  k.effective_modulus = pair.effective_modulus();
-  k.effective_mass = pair.effective_mass();
-  k.surface_energy = detail::adhesive_surface_energy(pair, name);
-  if (p.given("tvis")) {
-    k.relaxation_time = *p.real("tvis");
-  } else if (needs_tvis || !p.given("A")) {
-    throw InvalidArgument("tvis", "(not given)", fmt::format("a viscous relaxation time T_vis > 0 s (model {})", name));
-  }
-  k.dissipative_constant = p.given("A") ? *p.real("A") : krijt_dissipative_constant(k.relaxation_time, pair);
-  k.z0 = *p.real("z0");
-  if (needs_tvis) k.k = *p.real("k");
-  return k;
-}
-
-// The slots of a model with K13's parameters.
-Model contact_model(const KrijtParameters& k, const Parameters& p, NormalInteraction normal) {
-  Model m;
-  m.normal = std::move(normal);
-  m.dissipative_constant = k.dissipative_constant;
-  m.viscous_time = p.given("tvis") ? k.relaxation_time : k.dissipative_constant;
-  m.z0 = k.z0;
-  return m;
-}
-
-// jkr-viscoelastic per DEM contact: K13 (2) + (19) with a on the JKR branch a(delta) of K13 (8)
-// for the contact's R_eff; it holds down to the fold delta_c or the pull-off point.
-class JkrViscoelasticContact final : public ContactLaw {
- public:
-  JkrViscoelasticContact(const KrijtParameters& p, bool pull_off) : p_(p), pull_off_(pull_off) {}
-  double force(const ContactGeometry& g, double delta, double rate) const override {
-    const KrijtParameters p = at(g);
-    const double a = contact::jkr::DisplacementBranch(jkr(p)).radius(delta);
-    return elastic_force(p, a, delta) + bulk_dissipative_force(p, a, rate);
-  }
-  double energy(const ContactGeometry& g, double delta) const override {
-    const KrijtParameters p = at(g);
-    return contact_energy(p, contact::jkr::DisplacementBranch(jkr(p)).radius(delta), delta);
-  }
-  double release_overlap(const ContactGeometry& g) const override {
-    const contact::jkr::Parameters j = jkr(at(g));
-    return pull_off_ ? contact::jkr::pull_off_overlap(j) : contact::jkr::separation_overlap(j);
-  }
-
- private:
-  KrijtParameters at(const ContactGeometry& g) const {
-    KrijtParameters p = p_;
-    p.effective_radius = g.effective_radius;
-    p.effective_mass = g.effective_mass;
-    return p;
-  }
-  static contact::jkr::Parameters jkr(const KrijtParameters& p) {
-    return {p.effective_radius, p.effective_modulus, p.surface_energy};
-  }
-  KrijtParameters p_;
-  bool pull_off_;
-};
-
 // krijt per DEM contact: K13 (2) + (19) with the contact radius a of the contact's state,
 // moved each step by krijt_crack_step; the contact forms as K13 appendix B has it and ends at
 // K13's run-away.
@@ -483,22 +423,25 @@ class KrijtContact final : public CrackContactLaw {
 }  // namespace
 
 std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const Parameters& p) {
-  return std::make_shared<KrijtContact>(k13_parameters(pair, p, "krijt", true));
+  return std::make_shared<KrijtContact>(detail::contact_parameters(pair, p, "krijt", true));
 }
 
 Model make_krijt(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = k13_parameters(pair, p, "krijt", true);
-  return contact_model(k, p, CrackContact{k});
+  const KrijtParameters k = detail::contact_parameters(pair, p, "krijt", true);
+  return detail::contact_model(k, p, CrackContact{k});
 }
 
+// jkr-viscoelastic per DEM contact: JKR's branch at the contact's R_eff (a few constants: made at
+// every call), which holds down to the fold delta_c or the pull-off point.
 std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const Parameters& p) {
-  return std::make_shared<JkrViscoelasticContact>(k13_parameters(pair, p, "jkr-viscoelastic", false),
-                                                  parse_end_rule(p.text("contact_end")) == EndRule::pull_off);
+  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic", false);
+  const auto at = [e = k.effective_modulus, gamma = k.surface_energy](double r) { return detail::JkrGeometry(r, e, gamma); };
+  return detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant, detail::adhesive_release(p));
 }
 
 Model make_jkr_viscoelastic(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = k13_parameters(pair, p, "jkr-viscoelastic", false);
-  return contact_model(k, p, AdhesiveContact{k, jkr_geometry(k.effective_radius, k.effective_modulus, k.surface_energy)});
+  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic", false);
+  return detail::contact_model(k, p, AdhesiveContact{k, jkr_geometry(k.effective_radius, k.effective_modulus, k.surface_energy)});
 }
 
 }  // namespace bounce::models

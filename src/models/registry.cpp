@@ -21,10 +21,6 @@ namespace {
 
 using namespace catalogue;
 
-// The checked-in table: one row per model (keyword, summary, references, capabilities, own
-// parameters, factory). To add a model, write src/models/<model>.cpp with its factory
-// (declared in factories.hpp) and add its row here: the CLI, Python and docs/models.md
-// take it from this table.
 // The end rules of the force laws, and of the adhesive models that end where they break.
 Traits force_law(bool master_curve, Adhesion adhesion = Adhesion::negligible) {
   Traits t;
@@ -92,6 +88,14 @@ Traits krijt_traits() {
   return t;
 }
 
+// No pull-off end: toward DMT the least force lies at touching, inside the attraction's range,
+// past the snap-on; a release there would hand the pair the zone's energy (e > 1).
+Traits maugis_viscoelastic_traits() {
+  return adhesive(Engine::adhesive, Adhesion::maugis, {EndRule::overlap, EndRule::fold},
+                  "overlap or fold (the Maugis jump-off; no pull-off: toward DMT the least force lies inside the "
+                  "attraction's range)");
+}
+
 // The checked-in table: one row per model (keyword, summary, references, traits, own
 // parameters, factory, what fit fits, DEM laws). To add a model, write src/models/<model>.cpp
 // with its factory (declared in factories.hpp) and add its row here: the CLI, Python and
@@ -118,6 +122,10 @@ std::vector<ModelRow> builtin_rows() {
       {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
        "K13 (2), (14)-(21), appendices B, C", krijt_traits(), {relaxation_time(), dissipative_constant(), krijt_z0(), k()},
        &make_krijt, {"gamma", "tvis", "yield"}, {}, &krijt_crack_law},
+      {"maugis-viscoelastic", "contact on the Maugis-Dugdale branch (any Tabor parameter) plus the bulk force",
+       "Maugis 1992 (MD1)-(MD3), K13 (19), (20), docs/adhesive.md", maugis_viscoelastic_traits(),
+       {relaxation_time(), dissipative_constant(), z0()}, &make_maugis_viscoelastic, {"gamma", "tvis", "yield"},
+       &maugis_viscoelastic_contact},
   };
 }
 
@@ -125,8 +133,8 @@ std::vector<ModelRow> builtin_rows() {
 std::vector<ParameterSpec> every_model() {
   return {
       choice_parameter("contact_end", {"overlap", "force", "fold", "pull-off"},
-                       "overlap | force | fold | pull-off: when the contact ends (default overlap; fold and pull-off: "
-                       "jkr-viscoelastic)"),
+                       "overlap | force | fold | pull-off: when the contact ends (default overlap; the rules each "
+                       "model takes: bounce models)"),
       // K13 Fig 7 finds Y / E_soft from 1e-3 to the theoretical 0.2; at 1 no collision yields.
       fittable(real_parameter("yield", "yield strength Y", "Pa", positive(),
                               "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),

@@ -120,11 +120,12 @@ create_box {types} box
 
 
 def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", coeff=None, radius2=None,
-            tangential_velocity=0.0):
+            tangential_velocity=0.0, gap=0.0):
     """A two-sphere collision in LAMMPS: `pair` holds the bodies (material[, material2],
     radius[, radius2]) as for `bounce collide`, `model` the model's options. The spheres touch
-    at t = 0 with relative normal speed `velocity` (and tangential `tangential_velocity`) in
-    their centre-of-mass frame; dt = t_c / steps_per_contact with bounce's contact time.
+    at t = 0 (or are `gap` apart: a contact that forms before touching) with relative normal
+    speed `velocity` (and tangential `tangential_velocity`) in their centre-of-mass frame;
+    dt = t_c / steps_per_contact with bounce's contact time.
     Returns (eps^N from LAMMPS, eps^T from LAMMPS, bounce's record)."""
     options = dict(pair, **model)
     extra = ["--tangential-velocity", str(tangential_velocity)] if tangential_velocity else []
@@ -132,7 +133,8 @@ def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", 
     b1, b2 = ref["pair"]["body1"], ref["pair"]["body2"]
     r1, r2, m1, m2 = b1["radius"], b2["radius"], b1["mass"], b2["mass"]
     dt = ref["contact_time"] / steps_per_contact
-    steps = int(3 * steps_per_contact)
+    approach = gap / velocity  # the flight before the gap closes
+    steps = int(3 * steps_per_contact + math.ceil(approach / dt))
     box = 4 * (r1 + r2)
     v1, v2 = velocity * m2 / (m1 + m2), -velocity * m1 / (m1 + m2)
     u1, u2 = tangential_velocity * m2 / (m1 + m2), -tangential_velocity * m1 / (m1 + m2)
@@ -143,8 +145,8 @@ def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", 
         coeffs = "pair_coeff * * " + coeff.split(" ", 1)[1]
     plugin = f"plugin load {PLUGIN}" if pair_style.startswith("bounce") else ""
     script = preamble(box, 2) + f"""
-create_atoms 1 single {-r1} 0 0
-create_atoms 2 single {r2} 0 0
+create_atoms 1 single {-r1 - 0.5 * gap!r} 0 0
+create_atoms 2 single {r2 + 0.5 * gap!r} 0 0
 set atom 1 diameter {2 * r1} mass {m1}
 set atom 2 diameter {2 * r2} mass {m2}
 velocity all set 0 0 0
@@ -169,7 +171,7 @@ print "STATE $(x[1]:%.17g) $(y[1]:%.17g) $(vx[1]:%.17g) $(vy[1]:%.17g) $(v_w1:%.
     # The frame of the contact as it ended: the line of centres at separation (bounce's contact
     # time; after it the centres fly straight), not the x axis: sliding turns it by about
     # g^T t_c / (R1 + R2), which would otherwise mix g^N into g^T (BSHP96's geometry is fixed).
-    flight = steps * dt - ref["contact_time"]
+    flight = steps * dt - approach - ref["contact_time"]
     dx, dy = (x1 - vx1 * flight) - (x2 - vx2 * flight), (y1 - vy1 * flight) - (y2 - vy2 * flight)
     norm = math.hypot(dx, dy)
     nx, ny = dx / norm, dy / norm  # from 2 to 1 (initially -x)

@@ -66,6 +66,27 @@ def test_head_on_jkr_viscoelastic(end, pair):
         assert abs(errors[-1]) < abs(errors[0]), (factor, errors)
 
 
+@pytest.mark.parametrize("z0", [2e-12, 2e-9, 2e-8], ids=["jkr-end", "transition", "dmt-side"])
+@pytest.mark.parametrize("pair", [dict(material="water-ice", radius=1e-6),
+                                  dict(material="water-ice", material2="quartz", radius=1e-6, radius2=2e-6)],
+                         ids=["like", "unlike"])
+def test_head_on_maugis_viscoelastic(z0, pair):
+    """maugis-viscoelastic: the contact forms at the snap-on, h0 = 0.97 z0 before touching (the
+    spheres start 2 z0 apart), holds on the Maugis-Dugdale branch and ends at its fold; lambda ~
+    1e3, 0.98 and 0.098 for like ice. Within 1e-3 of bounce at 1.1x and 2x the sticking velocity at
+    dt = t_c/1000, as jkr-viscoelastic's bound, and converging."""
+    model = dict(model="maugis-viscoelastic", tvis=1e-11, z0=z0)
+    v_s = sticking_velocity(pair, model)
+    for factor in (1.1, 2.0):
+        errors = []
+        for n in (250, 1000):
+            eps, _, ref = L.head_on(pair, model, factor * v_s, steps_per_contact=n, gap=2 * z0)
+            assert ref["outcome"] == "bounce"
+            errors.append(eps - ref["cor"])
+        assert abs(errors[-1]) <= 1e-3, (factor, errors)
+        assert abs(errors[-1]) < abs(errors[0]), (factor, errors)
+
+
 # BSHP96 Fig 2's regimes (docs/tangential.md): BSHP96's ice, A = 1e-6 s, mu = sqrt(zeta0/R_eff).
 def oblique(zeta0, form, normal, tangential):
     return dict(model="viscoelastic", A=1e-6, friction=math.sqrt(zeta0), asperity=zeta0 * 0.005,
