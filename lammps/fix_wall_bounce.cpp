@@ -92,13 +92,44 @@ void FixWallBounce::setup(int vflag)
   post_force(vflag);
 }
 
+// The contact of atom i with a wall whose normal (into the box) is `sign` along the axis.
+bounce::lammps::Kinematics FixWallBounce::kinematics(int i, double sign, double overlap) const
+{
+  const double *v = atom->v[i], *o = atom->omega[i], r = atom->radius[i];
+  bounce::lammps::Kinematics k;
+  k.n[0] = k.n[1] = k.n[2] = 0.0;
+  k.n[axis_] = sign;
+  k.overlap = overlap;
+  k.vn = sign * v[axis_];
+  // The contact point's velocity in the tangent plane: v + omega x (-R n).
+  const double spin[3] = {-r * (o[1] * k.n[2] - o[2] * k.n[1]), -r * (o[2] * k.n[0] - o[0] * k.n[2]),
+                          -r * (o[0] * k.n[1] - o[1] * k.n[0])};
+  for (int d = 0; d < 3; d++) k.sliding[d] = v[d] + spin[d];
+  k.sliding[axis_] = 0.0;
+  return k;
+}
+
+// A contact too stiff for the time step: reported once per run and rank, with the numbers.
+void FixWallBounce::coarse(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, tagint i,
+                           double dt)
+{
+  if (warned_) return;
+  warned_ = true;
+  error->warning(FLERR,
+                 "fix wall/bounce: the contact of atom {} with the wall (overlap {:.3g} m, force {:.3g} N) has a "
+                 "period of {:.3g} steps of dt = {:.6g} s; bounce's laws need 20 or more for a COR to 1e-4, and "
+                 "with fewer than about 5 a collision can gain energy: use a smaller time step (docs/lammps.md, "
+                 "Time step)",
+                 i, k.overlap, c.normal, c.period_steps, dt);
+}
+
 void FixWallBounce::post_force(int)
 {
   bounce::lammps::StepSettings settings;
   settings.dt = update->dt;
   settings.update_history = !update->setupflag;
   settings.corrected = corrected_ && settings.update_history;
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+  double **x = atom->x, **f = atom->f, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
   const bounce::models::DemModel &law = *law_;
@@ -123,17 +154,7 @@ void FixWallBounce::post_force(int)
       g.effective_radius = radius[i];  // a flat wall
       g.effective_mass = rmass[i];     // an immovable one
       if (!touch && snaps && overlap <= law.snap_overlap(g)) continue;  // out of the zone's reach
-      bounce::lammps::Kinematics k;
-      k.n[0] = k.n[1] = k.n[2] = 0.0;
-      k.n[axis_] = sign;
-      k.overlap = overlap;
-      k.vn = sign * v[i][axis_];
-      // The contact point's velocity in the tangent plane: v + omega x (-R n).
-      const double *o = omega[i];
-      const double spin[3] = {-radius[i] * (o[1] * k.n[2] - o[2] * k.n[1]), -radius[i] * (o[2] * k.n[0] - o[0] * k.n[2]),
-                              -radius[i] * (o[0] * k.n[1] - o[1] * k.n[0])};
-      for (int d = 0; d < 3; d++) k.sliding[d] = v[i][d] + spin[d];
-      k.sliding[axis_] = 0.0;
+      const bounce::lammps::Kinematics k = kinematics(i, sign, overlap);
       const double release = overlap > 0.0 ? 0.0 : law.normal->release_overlap(g);
       const bounce::lammps::ContactForce c =
           bounce::lammps::contact_step(law, g, k, release, settings, touch, slot + 1);
@@ -143,15 +164,7 @@ void FixWallBounce::post_force(int)
                    "fix wall/bounce: the force on atom {} is not finite (overlap {:.6g} m, rate {:.6g} m/s, dt {:.6g} "
                    "s): the time step is too large for this law, or an input extreme (docs/lammps.md, Time step)",
                    atom->tag[i], k.overlap, -k.vn, settings.dt);
-      if (c.period_steps > 0.0 && c.period_steps < bounce::lammps::few_steps && !warned_) {
-        warned_ = true;
-        error->warning(FLERR,
-                       "fix wall/bounce: the contact of atom {} with the wall (overlap {:.3g} m, force {:.3g} N) has a "
-                       "period of {:.3g} steps of dt = {:.6g} s; bounce's laws need 20 or more for a COR to 1e-4, and "
-                       "with fewer than about 5 a collision can gain energy: use a smaller time step (docs/lammps.md, "
-                       "Time step)",
-                       atom->tag[i], k.overlap, c.normal, c.period_steps, settings.dt);
-      }
+      if (c.period_steps > 0.0 && c.period_steps < bounce::lammps::few_steps) coarse(c, k, atom->tag[i], settings.dt);
       for (int d = 0; d < 3; d++) f[i][d] += k.n[d] * c.normal + c.tangential[d];
       // Torque (-R n) x F^T, with lever arm R (as pair_style bounce).
       const double *ft = c.tangential;

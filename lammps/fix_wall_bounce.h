@@ -42,6 +42,8 @@ class FixWallBounce : public Fix {
   int unpack_exchange(int, double *) override;
 
  private:
+  bounce::lammps::Kinematics kinematics(int i, double sign, double overlap) const;
+  void coarse(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, tagint i, double dt);
   static constexpr int values = 1 + bounce::lammps::history_size;  // per atom and wall: the touch flag, the history (no crack laws at walls)
   static constexpr int size_ = 2 * values;  // per atom: two walls
   int axis_;

@@ -267,6 +267,28 @@ double PairBounce::init_one(int i, int j)
   return ri + rj + beyond;
 }
 
+namespace {
+
+// The contact's geometry and motion, as pair granular takes them: n from j to i, the overlap, the
+// normal rate and the contact points' relative velocity in the tangent plane.
+bounce::lammps::Kinematics kinematics(const double *xi, const double *xj, const double *vi, const double *vj,
+                                      const double *wi, const double *wj, double ri, double rj, double r)
+{
+  bounce::lammps::Kinematics k;
+  const double rinv = 1.0 / r;
+  for (int d = 0; d < 3; d++) k.n[d] = (xi[d] - xj[d]) * rinv;
+  k.overlap = ri + rj - r;
+  const double vr[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+  k.vn = vr[0] * k.n[0] + vr[1] * k.n[1] + vr[2] * k.n[2];
+  const double wr[3] = {ri * wi[0] + rj * wj[0], ri * wi[1] + rj * wj[1], ri * wi[2] + rj * wj[2]};
+  k.sliding[0] = vr[0] - k.vn * k.n[0] - (k.n[2] * wr[1] - k.n[1] * wr[2]);
+  k.sliding[1] = vr[1] - k.vn * k.n[1] - (k.n[0] * wr[2] - k.n[2] * wr[0]);
+  k.sliding[2] = vr[2] - k.vn * k.n[2] - (k.n[1] * wr[0] - k.n[0] * wr[1]);
+  return k;
+}
+
+}  // namespace
+
 // The loop of pair granular; each contact's step is bounce::lammps::contact_step (the
 // corrected or plain integration, docs/lammps.md).
 void PairBounce::compute(int eflag, int vflag)
@@ -277,54 +299,39 @@ void PairBounce::compute(int eflag, int vflag)
   settings.dt = update->dt;
   settings.update_history = !update->setupflag;
   settings.corrected = corrected_ && settings.update_history;  // setup: whole-step velocities
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *type = atom->type;
-  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
   int **firsttouch = fix_history_->firstflag;
   double **firsthistory = fix_history_->firstvalue;
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    int *touch = firsttouch[i];
-    double *all_history = firsthistory[i];
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radius[i] + radius[j];
-      double *history = &all_history[history_values_ * jj];
+      int &touch = firsttouch[i][jj];
+      double *history = &firsthistory[i][history_values_ * jj];
       // No contact, none before: its history is zero already (FixNeighHistory zeroes a new pair's,
       // and contact_step an ended contact's), and is left alone (up to 12 values a neighbour).
       // A law whose contact forms before touching (snap_overlap < 0) is asked where.
       const TypePair &entry = *laws_[type[i] * (atom->ntypes + 1) + type[j]];
-      if (!touch[jj] && rsq >= radsum * radsum && !entry.snaps) continue;
+      if (!touch && rsq >= radsum * radsum && !entry.snaps) continue;
       const bounce::models::DemModel &law = entry.law;
       bounce::models::ContactGeometry g;
       g.effective_radius = radius[i] * radius[j] / radsum;
       g.effective_mass = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-      if (!touch[jj] && entry.snaps && radsum - std::sqrt(rsq) <= law.snap_overlap(g)) continue;
+      if (!touch && entry.snaps && radsum - std::sqrt(rsq) <= law.snap_overlap(g)) continue;
       if (rsq == 0.0)
         error->one(FLERR, "pair_style bounce: atoms {} and {} are at the same place (no contact normal)", atom->tag[i],
                    atom->tag[j]);
-      const double r = std::sqrt(rsq), rinv = 1.0 / r;
-      bounce::lammps::Kinematics k;
-      k.n[0] = delx * rinv;
-      k.n[1] = dely * rinv;
-      k.n[2] = delz * rinv;
-      k.overlap = radsum - r;
-      const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-      k.vn = vr[0] * k.n[0] + vr[1] * k.n[1] + vr[2] * k.n[2];
-      // The contact points' relative velocity in the tangent plane, as pair granular takes it.
-      const double wr[3] = {radius[i] * omega[i][0] + radius[j] * omega[j][0],
-                            radius[i] * omega[i][1] + radius[j] * omega[j][1],
-                            radius[i] * omega[i][2] + radius[j] * omega[j][2]};
-      k.sliding[0] = vr[0] - k.vn * k.n[0] - (k.n[2] * wr[1] - k.n[1] * wr[2]);
-      k.sliding[1] = vr[1] - k.vn * k.n[1] - (k.n[0] * wr[2] - k.n[2] * wr[0]);
-      k.sliding[2] = vr[2] - k.vn * k.n[2] - (k.n[1] * wr[0] - k.n[0] * wr[1]);
+      const bounce::lammps::Kinematics k =
+          kinematics(x[i], x[j], v[i], v[j], omega[i], omega[j], radius[i], radius[j], std::sqrt(rsq));
       const double release = k.overlap > 0.0 || law.crack ? 0.0 : law.normal->release_overlap(g);
-      const bounce::lammps::ContactForce c = bounce::lammps::contact_step(law, g, k, release, settings, touch[jj], history);
+      const bounce::lammps::ContactForce c = bounce::lammps::contact_step(law, g, k, release, settings, touch, history);
       if (!c.finite())
         error->one(FLERR,
                    "pair_style bounce: the force between atoms {} and {} is not finite (overlap {:.6g} m, rate {:.6g} "
@@ -332,34 +339,44 @@ void PairBounce::compute(int eflag, int vflag)
                    "Time step)",
                    atom->tag[i], atom->tag[j], k.overlap, -k.vn, settings.dt);
       if (c.period_steps > 0.0 && c.period_steps < bounce::lammps::few_steps) coarse(c, k, atom->tag[i], atom->tag[j]);
-
-      const double *ft = c.tangential;
-      const double fx = k.n[0] * c.normal + ft[0], fy = k.n[1] * c.normal + ft[1], fz = k.n[2] * c.normal + ft[2];
-      f[i][0] += fx;
-      f[i][1] += fy;
-      f[i][2] += fz;
-      // The lever arm is the radius, as in BSHP96's (10) and in the contact points' velocity
-      // above (pair granular's R - xi/2 here would make the tangential force's power differ
-      // from -F^T . sliding by O(xi/R), and eps^T by ~1e-3 from bounce's).
-      const double tor[3] = {k.n[1] * ft[2] - k.n[2] * ft[1], k.n[2] * ft[0] - k.n[0] * ft[2],
-                             k.n[0] * ft[1] - k.n[1] * ft[0]};
-      for (int d = 0; d < 3; d++) torque[i][d] -= radius[i] * tor[d];
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= fx;
-        f[j][1] -= fy;
-        f[j][2] -= fz;
-        for (int d = 0; d < 3; d++) torque[j][d] -= radius[j] * tor[d];
-      }
-      // A crack law's energies (krijt): the pair is computed twice, once on each side, when j is a
-      // ghost atom and newton pair is off.
-      const double share = newton_pair || j < nlocal ? 1.0 : 0.5;
-      pvector[0] += share * c.crack_dissipated;
-      pvector[1] += share * c.bulk_dissipated;
-      if (eflag) {
-        pvector[2] += share * c.elastic;
-        pvector[3] += share * c.surface;
-      }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, c.elastic + c.surface, 0.0, fx, fy, fz, delx, dely, delz);
+      apply(i, j, c, k, delx, dely, delz, eflag);
     }
   }
+}
+
+// A contact's force and torque on atoms i and j (j only when it is owned or newton pair is on),
+// its energies and its virial.
+void PairBounce::apply(int i, int j, const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k,
+                       double delx, double dely, double delz, int eflag)
+{
+  double **f = atom->f, **torque = atom->torque;
+  const double *radius = atom->radius;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  const double *ft = c.tangential;
+  const double fx = k.n[0] * c.normal + ft[0], fy = k.n[1] * c.normal + ft[1], fz = k.n[2] * c.normal + ft[2];
+  f[i][0] += fx;
+  f[i][1] += fy;
+  f[i][2] += fz;
+  // The lever arm is the radius, as in BSHP96's (10) and in the contact points' velocity
+  // (pair granular's R - xi/2 here would make the tangential force's power differ from
+  // -F^T . sliding by O(xi/R), and eps^T by ~1e-3 from bounce's).
+  const double tor[3] = {k.n[1] * ft[2] - k.n[2] * ft[1], k.n[2] * ft[0] - k.n[0] * ft[2],
+                         k.n[0] * ft[1] - k.n[1] * ft[0]};
+  for (int d = 0; d < 3; d++) torque[i][d] -= radius[i] * tor[d];
+  if (newton_pair || j < nlocal) {
+    f[j][0] -= fx;
+    f[j][1] -= fy;
+    f[j][2] -= fz;
+    for (int d = 0; d < 3; d++) torque[j][d] -= radius[j] * tor[d];
+  }
+  // A crack law's energies (krijt): the pair is computed twice, once on each side, when j is a
+  // ghost atom and newton pair is off.
+  const double share = newton_pair || j < nlocal ? 1.0 : 0.5;
+  pvector[0] += share * c.crack_dissipated;
+  pvector[1] += share * c.bulk_dissipated;
+  if (eflag) {
+    pvector[2] += share * c.elastic;
+    pvector[3] += share * c.surface;
+  }
+  if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, c.elastic + c.surface, 0.0, fx, fy, fz, delx, dely, delz);
 }

@@ -52,6 +52,8 @@ class PairBounce : public Pair {
   void allocate();
   double reach(int itype, int jtype, double radius_i, double radius_j) const;
   void coarse(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, tagint i, tagint j);
+  void apply(int i, int j, const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, double delx,
+             double dely, double delz, int eflag);
 
   std::vector<std::shared_ptr<const TypePair>> laws_;  // [itype * (ntypes + 1) + jtype]
   class FixNeighHistory *fix_history_;

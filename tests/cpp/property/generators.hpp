@@ -21,6 +21,7 @@
 #include <rapidcheck.h>
 
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/core/parameters.hpp"
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/pair.hpp"
@@ -141,7 +142,7 @@ inline rc::Gen<double> valid_speed(const Pair& p) {
 
 /// The elastic Hertz contact time at speed g [s] (exact constant, BSHP96 (A13)).
 inline double hertz_time(const Pair& p, double speed) {
-  return analytic::hertz_contact_time(p.hertz_constant(), p.effective_mass(), speed);
+  return bounce::contact::hertz::collision_time(p.hertz_constant(), p.effective_mass(), speed);
 }
 
 /// The dissipative constant A [s] that gives the pair BP04's kappa (8.70) at speed g
