@@ -270,4 +270,17 @@ Parameters check_model(std::string_view name, const Inputs& inputs) {
   return models::bind_model_parameters(name, inputs);
 }
 
+InvalidArgument as_typed(const InvalidArgument& e, const Inputs& inputs) {
+  const auto it = inputs.find(e.parameter());
+  const std::string* text = it == inputs.end() ? nullptr : std::get_if<std::string>(&it->second);
+  if (text == nullptr || *text == e.value()) return e;
+  double typed = 0.0, checked = 0.0;
+  const std::string& value = e.value();
+  const auto a = std::from_chars(text->data(), text->data() + text->size(), typed);
+  const auto b = std::from_chars(value.data(), value.data() + value.size(), checked);
+  const bool same = a.ec == std::errc() && a.ptr == text->data() + text->size() && b.ec == std::errc() &&
+                    b.ptr == value.data() + value.size() && typed == checked;
+  return same ? InvalidArgument(e.parameter(), *text, e.allowed()) : e;
+}
+
 }  // namespace bounce::api

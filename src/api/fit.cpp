@@ -20,12 +20,7 @@ namespace {
 
 using detail::Plan;
 using detail::split;
-using detail::trial_inputs;
-
-// A trial's case: the fit command's binding of the fixed inputs with the collision values set.
-Case trial_case(const Plan& plan, std::span<const double> values) {
-  return detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(plan, values)));
-}
+using detail::trial_case;
 
 Table profile_table(const analysis::Profile& p) {
   Table t;

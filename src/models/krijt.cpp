@@ -251,25 +251,27 @@ class KrijtContact final : public CrackContactLaw {
 
 }  // namespace
 
-std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const Parameters& p) {
-  return std::make_shared<KrijtContact>(detail::contact_parameters(pair, p, "krijt", true));
+std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const CrackModelParameters& p, const Context&) {
+  return std::make_shared<KrijtContact>(detail::contact_parameters(pair, p, "krijt", p.k));
 }
 
-Model make_krijt(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "krijt", true);
+Model make_krijt(const Pair& pair, const CrackModelParameters& p, const Context&) {
+  const KrijtParameters k = detail::contact_parameters(pair, p, "krijt", p.k);
   return detail::contact_model(k, p, CrackContact{k});
 }
 
 // jkr-viscoelastic per DEM contact: JKR's branch at the contact's R_eff (a few constants: made at
 // every call), which holds down to the fold delta_c or the pull-off point.
-std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic", false);
+std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const ContactModelParameters& p,
+                                                           const Context& c) {
+  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic");
   const auto at = [e = k.effective_modulus, gamma = k.surface_energy](double r) { return detail::JkrGeometry(r, e, gamma); };
-  return detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant, detail::adhesive_release(p));
+  return detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant,
+                                         detail::adhesive_release(c.end_rule));
 }
 
-Model make_jkr_viscoelastic(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic", false);
+Model make_jkr_viscoelastic(const Pair& pair, const ContactModelParameters& p, const Context&) {
+  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic");
   return detail::contact_model(k, p, AdhesiveContact{k, jkr_geometry(k.effective_radius, k.effective_modulus, k.surface_energy)});
 }
 

@@ -13,6 +13,7 @@
 
 #include "adhesive_contact_law.hpp"
 #include "bounce/contact/surface_forces.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "adhesive_geometries.hpp"
 #include "factories.hpp"
@@ -50,25 +51,26 @@ class BranchesByRadius {
 // the attraction; Maugis-Dugdale's half-space picture (the gap r^2/(2R) of two paraboloids) needs
 // it small against R_eff. Beyond R_eff/10 the collision is refused (there the zone reaches across
 // the grain; slow impacts of 10 nm grains at z0 = 100 nm also ran out of the step budget).
-void check_zone_range(const KrijtParameters& k, const Parameters& p) {
+void check_zone_range(const KrijtParameters& k) {
   const double h0 = k.surface_energy / contact::surface::lennard_jones_max_tension(k.surface_energy, k.z0);
   if (h0 <= 0.1 * k.effective_radius) return;
   const double largest = k.z0 * 0.1 * k.effective_radius / h0;
-  throw InvalidArgument("z0", p.given("z0") ? p.typed("z0") : fmt::format("{:g} (default)", k.z0),
+  throw InvalidArgument("z0", format_value(k.z0),
                         fmt::format("z0 <= {:.6g} m for maugis-viscoelastic at R_eff = {:g} m (the attraction's "
                                     "range h0 = gamma/sigma0 = {:.3g} z0 must stay below R_eff/10)",
                                     largest, k.effective_radius, h0 / k.z0));
 }
 
-Model make_maugis_viscoelastic(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "maugis-viscoelastic", false);
-  check_zone_range(k, p);
+Model make_maugis_viscoelastic(const Pair& pair, const ContactModelParameters& p, const Context&) {
+  const KrijtParameters k = detail::contact_parameters(pair, p, "maugis-viscoelastic");
+  check_zone_range(k);
   return detail::contact_model(
       k, p, AdhesiveContact{k, maugis_geometry(k.effective_radius, k.effective_modulus, k.surface_energy, k.z0)});
 }
 
-std::shared_ptr<const ContactLaw> maugis_viscoelastic_contact(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "maugis-viscoelastic", false);
+std::shared_ptr<const ContactLaw> maugis_viscoelastic_contact(const Pair& pair, const ContactModelParameters& p,
+                                                              const Context& c) {
+  const KrijtParameters k = detail::contact_parameters(pair, p, "maugis-viscoelastic");
   auto branches = std::make_shared<const BranchesByRadius>(k.effective_modulus, k.surface_energy, k.z0);
   const auto at = [branches](double r) -> const AdhesiveGeometry& {
     // The geometry outlives the call: the cache keeps it (or, past its size, this thread's last).
@@ -76,7 +78,8 @@ std::shared_ptr<const ContactLaw> maugis_viscoelastic_contact(const Pair& pair, 
     held = branches->at(r);
     return *held;
   };
-  return detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant, detail::adhesive_release(p));
+  return detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant,
+                                         detail::adhesive_release(c.end_rule));
 }
 
 }  // namespace bounce::models
