@@ -265,7 +265,7 @@ def thermo_rows(output):
     """(step, value, ...) rows of the thermo table(s) LAMMPS printed."""
     rows, reading = [], False
     for line in output.splitlines():
-        if line.startswith("Step "):
+        if line.split()[:1] == ["Step"]:  # (LAMMPS 20250204 right-aligns it: "   Step")
             reading = True
             continue
         if reading:
