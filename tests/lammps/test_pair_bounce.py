@@ -166,7 +166,6 @@ run 0
     ("pair_coeff * * krijt material water-ice tvis 1e-11 yield 1e7", "yield = 1e7 is invalid"),
     ("pair_coeff * * krijt material ice-bshp96 tvis 1e-11", "gamma"),
     ("pair_coeff * * jkr-viscoelastic material ice-bshp96 tvis 1e-11", "gamma"),
-    ("pair_coeff 1 1 hertz material ice-bshp96\npair_coeff 2 2 hertz material quartz", "no pair_coeff 1 2"),
     ("pair_coeff * * hertz material ice-bshp96 E nan", "E = nan is invalid"),
     ("pair_coeff * * hertz material ice-bshp96 material2 quartz", "material2 = quartz is invalid"),
     ("pair_coeff * * viscoelastic material ice-bshp96 A 1e-5 friction 0.3 asperity 1e-300", "asperity = 1e-300 is invalid"),

@@ -78,20 +78,22 @@ def test_pair_local_gives_the_contact_force():
     """compute pair/local dist force and compute property/local patom1 patom2 run (they were refused
     without single()): the force is Hertz's (4/3) E* sqrt(R) xi^{3/2} (E* = E/(2(1 - nu^2)), R = 5 mm,
     xi = 10 um) to 1e-12, its distance 2 cm - 10 um."""
-    computes = """compute pl all pair/local dist force
+    with tempfile.TemporaryDirectory() as work:
+        path = os.path.join(work, "pairs.dump")
+        computes = f"""compute pl all pair/local dist force
 compute pp all property/local patom1 patom2
-compute f all reduce max c_pl[2]
-compute d all reduce max c_pl[1]
-compute n all reduce max c_pp[2]
-thermo_style custom step c_f c_d c_n
+dump out all local 1 {path} c_pl[1] c_pl[2] c_pp[1] c_pp[2]
+dump_modify out format float %.17g
 """
-    _, output = L.run_lammps(PRESSED.format(plugin=L.PLUGIN, computes=computes) +
-                             'print "F $(c_f:%.17g) $(c_d:%.17g) $(c_n)"\n')
-    f, d, n = [float(v) for v in output.split("\nF ")[-1].split()[:3]]
+        L.run_lammps(PRESSED.format(plugin=L.PLUGIN, computes=computes))
+        rows = [line.split() for line in open(path).read().split("ITEM: ENTRIES")[-1].splitlines()[1:] if line.strip()]
+    assert len(rows) == 1, rows
+    d, f = float(rows[0][0]), float(rows[0][1])
+    n = sorted(int(float(v)) for v in rows[0][2:4])
     e_star = 1e9 / (2 * (1 - 0.3 ** 2))
     hertz = 4 / 3 * e_star * math.sqrt(0.005) * 1e-5 ** 1.5
     assert abs(f - hertz) <= 1e-12 * hertz, (f, hertz)
-    assert abs(d - (0.02 - 1e-5)) <= 1e-15 and n == 2, (d, n)
+    assert abs(d - (0.02 - 1e-5)) <= 1e-15 and n == [1, 2], (d, n)
 
 
 # Row 5: unlike types mixed by bounce's rule.
