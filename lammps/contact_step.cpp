@@ -22,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace bounce::lammps {
 
@@ -275,7 +274,9 @@ ContactForce CrackContactStep::run() {
   const double fn = elastic + damping * xi_rate;
   const double previous = history_[last_force];
   record(elastic, damping, xi_rate, out);
-  if (fn > 0.0 && k_.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(g_.effective_mass * k_.overlap / fn) / s_.dt;
+  // Its rate is implicit with `corrected`: only the stiffness bounds the step.
+  if (s_.update_history && check_due(k_.overlap, history_[checked_overlap]))
+    out.check = check_crack_step(crack_, g_, k_.overlap, state_, {elastic, damping}, s_.dt, s_.corrected ? 0.0 : 0.5);
   tangential(law_, g_, k_, s_, fn, touching_ ? previous : fn, history_, out);
   out.normal = fn;
   // The forming step's impulse; and the displacement its force would have made by now, which
@@ -323,7 +324,8 @@ ContactForce contact_step(const models::DemModel& law, const models::ContactGeom
   const double rate = -k.vn - (s.corrected ? 0.5 * s.dt * previous / g.effective_mass : 0.0);
   const double fn = normal_force(law, g, k.overlap, rate);
   if (s.update_history) history[last_force] = fn;
-  if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(g.effective_mass * k.overlap / fn) / s.dt;
+  if (s.update_history && check_due(k.overlap, history[checked_overlap]))
+    out.check = check_step(*law.normal, g, k.overlap, rate, s.dt, s.corrected ? 1.0 : 0.5);
   tangential(law, g, k, s, fn, touching ? previous : fn, history, out);
   out.normal = fn;
   if (s.corrected && !touching) {  // formed inside the step, phi dt before now (or within reach already)

@@ -11,6 +11,7 @@ import tempfile
 LMP = os.environ.get("BOUNCE_LMP", "")
 PLUGIN = os.environ.get("BOUNCE_PLUGIN", "")
 CLI = os.environ.get("BOUNCE_CLI", "")
+last_output = ""  # head_on's last LAMMPS output
 
 
 def bounce(*args):
@@ -105,6 +106,11 @@ def printed(output, name):
     return float(match[-1])
 
 
+# One atom's spin as a global value: `variable w equal c_spin[1]` on a per-atom compute stops LAMMPS
+# 20250204 ("Mismatched compute in variable formula"); a sum over a group of that one atom works
+# on every release.
+
+
 def preamble(box, types):
     """An SI sphere system in a fixed cube of half-side `box` with `types` atom types, atoms
     addressable by id (x[1], vx[2] in variables)."""
@@ -120,7 +126,7 @@ create_box {types} box
 
 
 def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", coeff=None, radius2=None,
-            tangential_velocity=0.0, gap=0.0):
+            tangential_velocity=0.0, gap=0.0, coeff_lines=None):
     """A two-sphere collision in LAMMPS: `pair` holds the bodies (material[, material2],
     radius[, radius2]) as for `bounce collide`, `model` the model's options. The spheres touch
     at t = 0 (or are `gap` apart: a contact that forms before touching) with relative normal
@@ -139,7 +145,9 @@ def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", 
     v1, v2 = velocity * m2 / (m1 + m2), -velocity * m1 / (m1 + m2)
     u1, u2 = tangential_velocity * m2 / (m1 + m2), -tangential_velocity * m1 / (m1 + m2)
     materials = {k: v for k, v in pair.items() if not k.startswith("radius")}
-    if coeff is None:
+    if coeff_lines is not None:  # pair_coeff lines as given
+        coeffs = coeff_lines
+    elif coeff is None:
         coeffs = pair_coeffs(materials, model)
     else:
         coeffs = "pair_coeff * * " + coeff.split(" ", 1)[1]
@@ -158,15 +166,21 @@ pair_style {pair_style}
 neighbor {max(r1, r2) * 0.1} bin
 timestep {dt!r}
 fix 1 all nve/sphere
+group one id 1
+group two id 2
 compute spin all property/atom omegaz
-variable w1 equal c_spin[1]
-variable w2 equal c_spin[2]
+compute w1 one reduce sum c_spin
+compute w2 two reduce sum c_spin
+variable w1 equal c_w1
+variable w2 equal c_w2
 thermo_style custom step v_w1 v_w2
 thermo {steps}
 run {steps}
 print "STATE $(x[1]:%.17g) $(y[1]:%.17g) $(vx[1]:%.17g) $(vy[1]:%.17g) $(v_w1:%.17g) $(x[2]:%.17g) $(y[2]:%.17g) $(vx[2]:%.17g) $(vy[2]:%.17g) $(v_w2:%.17g)"
 """
     _, output = run_lammps(script)
+    global last_output
+    last_output = output  # what LAMMPS printed (for its warnings)
     x1, y1, vx1, vy1, w1, x2, y2, vx2, vy2, w2 = final_state(output)
     # The frame of the contact as it ended: the line of centres at separation (bounce's contact
     # time; after it the centres fly straight), not the x axis: sliding turns it by about
@@ -251,7 +265,7 @@ def thermo_rows(output):
     """(step, value, ...) rows of the thermo table(s) LAMMPS printed."""
     rows, reading = [], False
     for line in output.splitlines():
-        if line.startswith("Step "):
+        if line.split()[:1] == ["Step"]:  # (LAMMPS 20250204 right-aligns it: "   Step")
             reading = True
             continue
         if reading:
@@ -302,7 +316,8 @@ pair_coeff * * hertz E 1e9 nu 0.3
 fix 1 all nve/sphere
 fix 2 all wall/bounce {wall_args}
 compute spin all property/atom omegay
-variable w equal c_spin[1]
+compute w all reduce sum c_spin
+variable w equal c_w
 thermo_style custom step v_w
 thermo {steps}
 timestep {dt!r}
