@@ -43,6 +43,7 @@ from ._bounce import (  # noqa: F401
     sticking_velocity,
     viscoelastic_scales,
 )
+from .posterior import posterior  # noqa: F401  (emcee over a fit's parameters)
 
 
 __all__ = [
@@ -65,6 +66,7 @@ __all__ = [
     "material_names",
     "materials",
     "models",
+    "posterior",
     "sticking",
     "sticking_velocity",
     "viscoelastic_scales",

@@ -24,6 +24,7 @@ from matplotlib.figure import Figure
 
 from . import _bounce as b
 from .fit_plots import batch_summary, chi2_map, fit_curve  # noqa: F401  (K13 Figs 6, 7, 8 and a fit's chi^2)
+from .posterior_plots import corner  # noqa: F401  (a posterior's marginals and pairwise densities)
 
 # --- the set-ups of the papers ---------------------------------------------------------
 

@@ -8,6 +8,7 @@
 
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
+#include "fit.hpp"
 #include "objects.hpp"
 
 namespace bounce::python {
@@ -52,6 +53,20 @@ analysis::Experiment from_file(const std::string& path) {
   return analysis::parse_experiment(read_text_file("data", path, "a readable CSV file (docs/fitting.md)"), path);
 }
 
+}  // namespace
+
+analysis::Experiment experiment_from(const py::object& velocity, const py::object& cor, const py::object& cor_error,
+                                     const py::object& data) {
+  if (!data.is_none() && !(velocity.is_none() && cor.is_none() && cor_error.is_none())) {
+    throw InvalidArgument("data", py::str(data), "either data (a file) or velocity and cor (arrays), not both");
+  }
+  if (data.is_none() && (velocity.is_none() || cor.is_none())) {
+    throw InvalidArgument("velocity", "None", "arrays velocity and cor (or data, a CSV file)");
+  }
+  if (!data.is_none() && !py::isinstance<py::str>(data)) throw py::type_error("data: expected a file name (str)");
+  return data.is_none() ? from_arrays(velocity, cor, cor_error) : from_file(data.cast<std::string>());
+}
+
 // fit=("gamma", "tvis") or "gamma,tvis"; grid={"gamma": (lo, hi, n)}: the front door's text.
 std::string fit_text(const py::object& names) {
   std::vector<std::string> parts;
@@ -77,6 +92,8 @@ std::string grid_text(const py::dict& grid) {
   return fmt::format("{}", fmt::join(items, ","));
 }
 
+namespace {
+
 // chi2_grid as an array of its shape (NaN where the collisions failed), with the axes.
 void grid_to_numpy(py::dict& d) {
   if (!d.contains("chi2_grid")) return;
@@ -99,15 +116,7 @@ void grid_to_numpy(py::dict& d) {
 py::dict fit(const PyPair& pair, const PyModel& model, const py::object& velocity, const py::object& cor,
              const py::object& cor_error, const py::object& data, const py::object& fit_names, const py::object& grid,
              const py::kwargs& options) {
-  if (!data.is_none() && !(velocity.is_none() && cor.is_none() && cor_error.is_none())) {
-    throw InvalidArgument("data", py::str(data), "either data (a file) or velocity and cor (arrays), not both");
-  }
-  if (data.is_none() && (velocity.is_none() || cor.is_none())) {
-    throw InvalidArgument("velocity", "None", "arrays velocity and cor (or data, a CSV file)");
-  }
-  if (!data.is_none() && !py::isinstance<py::str>(data)) throw py::type_error("data: expected a file name (str)");
-  const analysis::Experiment experiment =
-      data.is_none() ? from_arrays(velocity, cor, cor_error) : from_file(data.cast<std::string>());
+  const analysis::Experiment experiment = experiment_from(velocity, cor, cor_error, data);
   api::Inputs in = case_inputs(pair, model, options);
   in["chi2_grid"] = true;
   if (!fit_names.is_none()) in["fit"] = fit_text(fit_names);
