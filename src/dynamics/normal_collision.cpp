@@ -49,22 +49,23 @@ CollisionOutcome integrate_normal_collision(const models::NormalForceModel& mode
     s.kinetic = 0.5 * effective_mass * rate * rate;
     s.elastic = model.elastic_energy(xi);
     s.bulk_dissipated = y[2] * energy_unit;
-    out.trajectory.push_back(s);
+    return s;
   };
+  TrajectoryRecorder trajectory(out.trajectory, out.trajectory_thinning);
   // Elastic Hertz contact lasts 2.94 scaled units (BSHP96 (A13)).
   const double spacing = 2.94 / std::max(options.trajectory_points, 1);
   double next_sample = spacing;  // the start is sampled below
   const detail::StepObserver<3> observer = [&](double t0, double t1, const auto& at) {
-    for (; next_sample <= t1; next_sample += spacing) {
-      if (next_sample >= t0) sample(next_sample, at(next_sample));
+    for (; next_sample <= t1; next_sample += trajectory.step(spacing, time_unit)) {
+      if (next_sample >= t0) trajectory.add(sample(next_sample, at(next_sample)));
     }
   };
-  if (options.record_trajectory) sample(0.0, start);
+  if (options.record_trajectory) trajectory.add(sample(0.0, start));
 
   auto result = detail::integrate_until_event<3>(system, start, 0.0, 1e-3, options.integration, events,
                                                  options.record_trajectory ? &observer : nullptr);
   const State& end = result.terminal.state;
-  if (options.record_trajectory) sample(result.terminal.time, end);
+  if (options.record_trajectory) trajectory.add_end(sample(result.terminal.time, end));
 
   out.steps = result.steps;
   detail::NormalEnd normal_end;
