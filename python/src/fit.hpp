@@ -12,10 +12,11 @@ namespace bounce::python {
 
 namespace py = pybind11;
 
-/// The experiment of arrays velocity, cor (, cor_error) or of data, a CSV file (not both):
-/// the library's reader, refusals naming the array and index or the file and line.
+/// The experiment of arrays velocity, cor (, cor_error) or of data, a CSV file (not both; with
+/// `columns`, the CLI's --columns mapping, a dict or "velocity=...,cor=..."): the library's
+/// reader, refusals naming the array and index or the file and line.
 analysis::Experiment experiment_from(const py::object& velocity, const py::object& cor, const py::object& cor_error,
-                                     const py::object& data);
+                                     const py::object& data, const py::object& columns = py::none());
 /// fit=("gamma", "tvis") or "gamma,tvis" as the front door's text ("gamma,tvis").
 std::string fit_text(const py::object& names);
 /// grid={"gamma": (lo, hi, n)} as the front door's text ("gamma=lo:hi:n").
