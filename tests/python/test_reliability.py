@@ -116,3 +116,20 @@ def test_readme_command_lines_run_as_written():
     for line in lines:
         code = line.split("  #", 1)[0]
         assert "[--" not in code and "]" not in code, line
+
+
+def test_implausible_youngs_modulus_is_warned(tmp_path):
+    """E = 200 Pa (a value meant in MPa or GPa) is accepted, as any E > 0, but each collision
+    says so; from a materials file as from an explicit pair, and not for real materials."""
+    soft = bounce.Pair(E=200.0, nu=0.3, density=1000.0, radius=1e-3)
+    warnings = bounce.collide(soft, bounce.Model("viscoelastic", A=1e-6), 1e-4)["warnings"]
+    assert any("Young's modulus E = 200 Pa is outside" in w for w in warnings), warnings
+    f = tmp_path / "m.toml"
+    f.write_text('[[material]]\nname = "typo"\nyoungs_modulus = 200\npoisson_ratio = 0.3\ndensity = 1000\n'
+                 'surface_energy = 0.1\n')
+    out = subprocess.run([CLI, "collide", "--materials-file", str(f), "--material", "typo", "--radius", "1e-3",
+                          "--A", "1e-6", "--velocity", "1e-4", "--json"], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert any("body1 (typo): Young's modulus E = 200 Pa" in w for w in json.loads(out.stdout)["warnings"])
+    steel = bounce.collide(bounce.Pair(material="steel", radius=1e-3), bounce.Model("viscoelastic", A=1e-6), 1.0)
+    assert not any("Young's modulus" in w for w in steel["warnings"])
