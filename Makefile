@@ -27,8 +27,9 @@ CMAKE_FLAGS ?=
 ASAN_DIR  ?= build-asan
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS ?= materials table rules ranges cli fit_data
-# The sanitizer build's own packages (clang with its sanitizer and libFuzzer runtimes).
-SANITIZE_DEPS := clang libclang-rt-dev ccache
+# The sanitizer build's own packages (clang with its sanitizer and libFuzzer runtimes; LLVM's
+# OpenMP, which SUNDIALS 7's CMake package looks for and clang finds only with it).
+SANITIZE_DEPS := clang libclang-rt-dev libomp-dev ccache
 # Every report ends the process with an error, leaks included (docs/hardening.md).
 SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:strict_init_order=1 \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
