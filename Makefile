@@ -14,6 +14,10 @@
 #                    cached in ~/.cache/bounce, and build/lammps/bounceplugin.so against it;
 #                    build/lammps/lmp runs it, and `make test` then runs the LAMMPS tests
 #                    (docs/lammps.md)
+#   make package     Debian packages (CPack DEB) into dist/: libbounce0, libbounce-dev, bounce (man
+#                    page, bash completion), python3-bounce, bounce-lammps-plugin (docs/install.md)
+#   make check-package  opt-in: make package, then the packages unpacked into an empty folder and
+#                    checked (--version, a collision, import bounce, the consumer, plugin load)
 #   make lammps-demo opt-in, on 2 MPI ranks: the homogeneous cooling state of two granular gases
 #                    (~7 min; out/figures/hcs-cooling, out/hcs/results.json) and the aggregation of
 #                    sticky ice grains with K13's law against elastic JKR (~2 min;
@@ -35,7 +39,7 @@ SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_aft
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 .PHONY: all build deps deps-sanitize configure test demo bench check-long lint clean \
-        build-sanitize test-sanitize fuzz lammps lammps-demo
+        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package
 
 all: build
 
@@ -87,6 +91,15 @@ lammps: deps
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 	@echo "bounce: $(BUILD_DIR)/lammps/lmp and $(BUILD_DIR)/lammps/bounceplugin.so (docs/lammps.md)"
 
+# The packages are built in their own tree (/usr prefix, no tests), with the LAMMPS plugin
+# against `make lammps`'s LAMMPS (scripts/build-lammps.sh prints its src/ folder).
+package: deps
+	@./scripts/install-deps.sh help2man dpkg-dev file xz-utils
+	@src=$$(./scripts/build-lammps.sh) && JOBS=$(JOBS) WERROR=$(WERROR) ./scripts/package.sh build-package dist "$$src"
+
+check-package: package
+	@src=$$(./scripts/build-lammps.sh) && ./scripts/check-package.sh --lmp "$$src/../../build/lmp" dist
+
 lammps-demo: lammps
 	$(PYTHON) tools/hcs.py --build $(BUILD_DIR) --out out
 	$(PYTHON) tools/aggregation.py --build $(BUILD_DIR) --out out
@@ -109,4 +122,4 @@ lint: build
 	./tools/check_sizes.sh $(BUILD_DIR)
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) out
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) out build-package dist

@@ -16,6 +16,7 @@
 #include "bounce/core/suggest.hpp"
 #include "bounce/core/version.hpp"
 #include "commands.hpp"
+#include "completion.hpp"
 #include "output.hpp"
 
 namespace {
@@ -123,6 +124,8 @@ int run(int argc, const char* const* argv) {
     commands.push_back(add_command(app, spec));
     names.push_back(spec.name);
   }
+  const CLI::App* completion = add_completion_command(app);
+  names.push_back(completion->get_name());
   if (argc <= 1) {  // `bounce` alone introduces itself: what it is and its commands
     return run_guarded([&app] {
       std::cout << app.help();
@@ -156,6 +159,12 @@ int run(int argc, const char* const* argv) {
   }
   for (const Command& command : commands) {
     if (command.app->parsed()) return run_guarded(command.run, command.options->all_names());
+  }
+  if (completion->parsed()) {
+    return run_guarded([&app] {
+      std::cout << bash_completion(app);
+      return 0;
+    }, {});
   }
   return 2;
 }
