@@ -18,6 +18,7 @@
 #                    page, bash completion), python3-bounce, bounce-lammps-plugin (docs/install.md)
 #   make check-package  opt-in: make package, then the packages unpacked into an empty folder and
 #                    checked (--version, a collision, import bounce, the consumer, plugin load)
+#   make check-pip   opt-in: pip install --no-build-isolation . into a fresh venv, import, pip wheel
 #   make lammps-demo opt-in, on 2 MPI ranks: the homogeneous cooling state of two granular gases
 #                    (~7 min; out/figures/hcs-cooling, out/hcs/results.json) and the aggregation of
 #                    sticky ice grains with K13's law against elastic JKR (~2 min;
@@ -39,7 +40,7 @@ SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_aft
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 .PHONY: all build deps deps-sanitize configure test demo bench check-long lint clean \
-        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package
+        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip
 
 all: build
 
@@ -100,6 +101,10 @@ package: deps
 check-package: package
 	@src=$$(./scripts/build-lammps.sh) && ./scripts/check-package.sh --lmp "$$src/../../build/lmp" dist
 
+check-pip: deps
+	@./scripts/install-deps.sh python3-venv python3-pip python3-setuptools python3-wheel
+	CMAKE_BUILD_PARALLEL_LEVEL=$(JOBS) ./scripts/check-pip.sh
+
 lammps-demo: lammps
 	$(PYTHON) tools/hcs.py --build $(BUILD_DIR) --out out
 	$(PYTHON) tools/aggregation.py --build $(BUILD_DIR) --out out
@@ -122,4 +127,4 @@ lint: build
 	./tools/check_sizes.sh $(BUILD_DIR)
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) out build-package dist
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) out build-package build-pip dist
