@@ -19,6 +19,8 @@
 #   make check-package  opt-in: make package, then the packages unpacked into an empty folder and
 #                    checked (--version, a collision, import bounce, the consumer, plugin load)
 #   make check-pip   opt-in: pip install --no-build-isolation . into a fresh venv, import, pip wheel
+#   make check-debian13  opt-in, root: make test, make demo and make check-pip in a fresh Debian 13
+#                    (trixie) root made by debootstrap (docs/install.md records the times)
 #   make lammps-demo opt-in, on 2 MPI ranks: the homogeneous cooling state of two granular gases
 #                    (~7 min; out/figures/hcs-cooling, out/hcs/results.json) and the aggregation of
 #                    sticky ice grains with K13's law against elastic JKR (~2 min;
@@ -40,7 +42,7 @@ SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_aft
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 .PHONY: all build deps deps-sanitize configure test demo bench check-long lint clean \
-        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip
+        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip check-debian13
 
 all: build
 
@@ -104,6 +106,9 @@ check-package: package
 check-pip: deps
 	@./scripts/install-deps.sh python3-venv python3-pip python3-setuptools python3-wheel
 	CMAKE_BUILD_PARALLEL_LEVEL=$(JOBS) ./scripts/check-pip.sh
+
+check-debian13:
+	./scripts/check-debian13.sh
 
 lammps-demo: lammps
 	$(PYTHON) tools/hcs.py --build $(BUILD_DIR) --out out
