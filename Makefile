@@ -5,7 +5,8 @@
 #   make demo   install missing Debian packages, build, run the main job into out/
 #   make bench  build and run the benchmarks (not part of `make test`)
 #   make check-long  opt-in long sweeps (results recorded in docs/)
-#   make lint        opt-in: functions over 60 lines, files over 400 (clang-tidy), layering
+#   make lint        functions over 60 lines, files over 400 (clang-tidy), layering; both checks
+#                    also run in `make test` (tests lint_sizes, layers_include_downward)
 #   make test-sanitize  the C++ tests and 15 s of each fuzz target, built with clang,
 #                    AddressSanitizer and UndefinedBehaviorSanitizer in build-asan
 #   make fuzz        each fuzz target for FUZZ_SECONDS (default 600) in build-asan
@@ -35,8 +36,9 @@ ASAN_DIR  ?= build-asan
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS ?= materials table rules ranges cli fit_data
 # The sanitizer build's own packages (clang with its sanitizer and libFuzzer runtimes; LLVM's
-# OpenMP, which SUNDIALS 7's CMake package looks for and clang finds only with it).
-SANITIZE_DEPS := clang libclang-rt-dev libomp-dev ccache
+# OpenMP, which SUNDIALS 7's CMake package looks for and clang finds only with it), and
+# clang-tidy for the size check (`make lint`, test lint_sizes).
+SANITIZE_DEPS := clang libclang-rt-dev libomp-dev ccache clang-tidy
 # Every report ends the process with an error, leaks included (docs/hardening.md).
 SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:strict_init_order=1 \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
@@ -76,11 +78,11 @@ $(ASAN_DIR)/CMakeCache.txt:
 build-sanitize: $(ASAN_DIR)/CMakeCache.txt
 	cmake --build $(ASAN_DIR) -j $(JOBS)
 
-# Not here: pytest (no extension in this build) and the find_package consumer (built by the
-# system compiler, without the sanitizers' runtime).
+# Not here: pytest (no extension in this build), the find_package consumer (built by the
+# system compiler, without the sanitizers' runtime) and the size check (the same sources).
 test-sanitize: deps-sanitize
 	@$(MAKE) --no-print-directory build-sanitize
-	cd $(ASAN_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE 'long|python|packaging'
+	cd $(ASAN_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE 'long|python|packaging|lint'
 
 fuzz: deps-sanitize
 	@$(MAKE) --no-print-directory build-sanitize

@@ -1,17 +1,19 @@
 #!/usr/bin/python3
 """pair_style bounce against LAMMPS's own pair granular in the same lmp (docs/benchmarks.md):
 
-1. per-contact cost: a dense gas of soft viscoelastic grains (volume fraction 0.45, so that most
-   neighbors touch), the same start for `pair_style bounce` (corrected and plain) and for
-   `pair_style granular hertz/material ... damping viscoelastic` with the coefficients
-   `bounce lammps` prints; LAMMPS's own timer of the Pair section per step and contact;
+1. per-contact cost on a settled bed of 20 000 soft viscoelastic grains under gravity (every grain
+   in contact with its neighbours for good), frictionless and with friction, side by side:
+   `pair_style bounce` (corrected and plain) and `pair_style granular hertz/material ... damping
+   viscoelastic` with the coefficients `bounce lammps` prints (and a linear_history tangential
+   force where friction is on); LAMMPS's own timer of the Pair section per step and contact; and
+   the same on a dense gas (volume fraction 0.45), where contacts form and end;
 2. krijt (K13's crack law) against the plugin's viscoelastic law with the same A, on a dense gas
    of micrometre water-ice grains whose contacts stick and persist, and on a gas of colliding
    ones whose contacts form and break (the Pair section per step and contact); both again with
    the crack constant k = 0.1 and 0.5 instead of K13's 0.02;
 3. strong scaling: 103 823 grains on 1 and 2 ranks (loop time).
 
-    /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR]      (after make lammps)
+    /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR [bed]]      (after make lammps; bed: 1. only)
 """
 import os
 import re
@@ -81,6 +83,106 @@ def per_contact():
         base = base or (per, loop)
         print(f"  {label:45s} {per * 1e9:6.1f} ns/contact ({2 * c / n:.2f} contacts/grain): x{per / base[0]:.2f}; "
               f"whole loop {loop:.2f} s (x{loop / base[1]:.2f})")
+
+
+def bed_script(style, coeff, data, steps, wall):
+    """The settled bed read from `data`, `steps` steps of `style` with a floor `wall`."""
+    plugin = f"plugin load {L.PLUGIN}" if style.startswith("bounce") else ""
+    return f"""
+units si
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+read_data {data}
+{plugin}
+pair_style {style}
+pair_coeff * * {coeff}
+neighbor {0.1 * RADIUS!r} bin
+neigh_modify delay 0 every 1 check yes
+fix 1 all nve/sphere
+fix 2 all gravity 9.81 vector 0 0 -1
+fix 3 all {wall}
+compute touch all contact/atom
+compute total all reduce sum c_touch
+compute ke all ke
+thermo_style custom step c_ke c_total
+thermo {max(steps // 5, 1)}
+timestep 3e-6
+run {steps}
+"""
+
+
+def settled_bed(work):
+    """20 000 grains (25 x 25 x 32 on a simple cubic lattice, shaken by random velocities of 0.1 m/s)
+    let fall and settle for 10 000 steps with strong damping (A = 3e-5 s) onto a floor: a data
+    file."""
+    data = os.path.join(work, "bed.data")
+    mass = 4.0 / 3.0 * 3.141592653589793 * RADIUS ** 3 * DENSITY
+    spacing = 2.02 * RADIUS
+    script = f"""
+units si
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+lattice sc {spacing!r}
+region box block 0 25 0 25 0 40
+create_box 1 box
+region fill block 0 25 0 25 0.5 32.5
+create_atoms 1 region fill
+set type 1 diameter {2 * RADIUS!r} density {DENSITY!r}
+velocity all create {mass * 0.1 ** 2 / (3 * 1.380649e-23)!r} 8271 dist gaussian mom yes rot no loop geom
+plugin load {L.PLUGIN}
+pair_style bounce
+pair_coeff * * viscoelastic E {E!r} nu {NU} A 3e-5
+neighbor {0.1 * RADIUS!r} bin
+fix 1 all nve/sphere
+fix 2 all gravity 9.81 vector 0 0 -1
+fix 3 all wall/bounce zplane 0 NULL viscoelastic E {E!r} nu {NU} A 3e-5
+timestep 3e-6
+thermo 5000
+run 10000
+write_data {data}
+"""
+    L.run_in(work, script, 1, "in.settle")
+    return data
+
+
+def bed_per_contact():
+    """The issue's bound: bounce at most 1.1x pair granular per contact, frictionless and with
+    friction, on the settled bed; the fastest of three interleaved runs."""
+    import tempfile
+    mass = 4.0 / 3.0 * 3.141592653589793 * RADIUS ** 3 * DENSITY
+    e_star = E / (2 * (1 - NU * NU))
+    eta = 2 * A * e_star / (mass / 2)
+    stock = f"hertz/material {E!r} {eta!r} {NU} damping viscoelastic"
+    ours = f"viscoelastic E {E!r} nu {NU} A {A}"
+    wall_stock = f"wall/gran granular {stock} tangential linear_nohistory 0 0 zplane 0 NULL"
+    wall_ours = f"wall/bounce zplane 0 NULL {ours}"
+    steps = 1000
+    with tempfile.TemporaryDirectory() as work:
+        data = settled_bed(work)
+        for friction in (False, True):
+            tangential = "tangential linear_history 1e3 0 0.3" if friction else "tangential linear_nohistory 0 0"
+            rough = " friction 0.3 asperity 1e-6" if friction else ""
+            styles = [("pair granular hertz/material + viscoelastic", "granular", f"{stock} {tangential}", wall_stock),
+                      ("pair_style bounce viscoelastic (plain)", "bounce integration plain", ours + rough, wall_ours),
+                      ("pair_style bounce viscoelastic (corrected)", "bounce", ours + rough, wall_ours)]
+            best = {}
+            for _ in range(3):
+                for label, style, coeff, wall in styles:
+                    out = L.run_lammps(bed_script(style, coeff, data, steps, wall))[1]
+                    pair = section(out, "Pair")
+                    if label not in best or pair < best[label][0]:
+                        best[label] = (pair, contacts(out))
+            n = 25 * 25 * 32
+            print(f"settled bed of {n} grains, {'with friction' if friction else 'frictionless'}, {steps} steps; "
+                  "LAMMPS's Pair time per step and contact:")
+            base = None
+            for label, _, _, _ in styles:
+                pair, c = best[label]
+                per = pair / steps / c
+                base = base or per
+                print(f"  {label:45s} {per * 1e9:6.1f} ns/contact ({2 * c / n:.2f} contacts/grain): x{per / base:.2f}")
 
 
 def krijt_against_viscoelastic(title, phi, speed, dt, steps, k=0.02):
@@ -155,6 +257,10 @@ def scaling():
 
 if __name__ == "__main__":
     start = time.time()
+    if len(sys.argv) > 2 and sys.argv[2] == "bed":  # the issue's bound alone
+        bed_per_contact()
+        sys.exit(0)
+    bed_per_contact()
     per_contact()
     krijt_cost()
     krijt_gas_cost()

@@ -8,7 +8,8 @@
     * a contact that forms inside the step, phi dt before t_n, gets the impulse of its force over
       that time by Simpson's rule, plus F_n dt/2: phi (F_0 + 4 F_m + F_n)/6 + F_n/2, with F_0 at
       first touch (JKR's snap-on, viscoelastic-shifted's C0 (A xi')^{3/2}; 0 for Hertz) and F_m
-      at half the overlap;
+      half-way; a law whose contact forms before touching (Maugis-Dugdale's snap-on at -h0) forms
+      it at its snap overlap instead of 0;
     * a contact that ends inside the step, theta dt after t_{n-1}, gets the impulse of its force
       from the last overlap to the release overlap by Simpson's rule, less the F_{n-1} dt/2 the
       last step already gave: theta (F_{n-1} + 4 F_m + F_r)/6 - F_{n-1}/2.
@@ -21,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace bounce::lammps {
 
@@ -128,143 +128,167 @@ bool break_inside_step(const models::CrackContactLaw& crack, const models::Conta
    the overlap is then. With `corrected`, the step where it forms gets the impulse of the part
    phi dt it lasted, and the step where it breaks that of the part theta dt before the break,
    each by the trapezoidal rule on stretches of the step in which the crack moves (below). */
-ContactForce crack_step(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
-                        const StepSettings& s, int& touch, double* history) {
-  const models::CrackContactLaw& crack = *law.crack;
-  ContactForce out;
-  const bool touching = touch != 0;
-  if (!touching && k.overlap <= 0.0) {
-    clear(touch, history, crack_history_size);
-    return out;
-  }
-  const double before = k.overlap + s.dt * k.vn;  // the overlap at the step before
-  const double m = g.effective_mass, half_step_over_m = 0.5 * s.dt / m;
-  // The rate at t_n of a force F_E + D xi' (the trapezoidal rule), or LAMMPS's half-step one.
-  auto rate = [&](double elastic, double damping) {
-    return s.corrected ? (-k.vn - half_step_over_m * elastic) / (1.0 + half_step_over_m * damping) : -k.vn;
-  };
+class CrackContactStep {
+ public:
+  CrackContactStep(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
+                   const StepSettings& s, int& touch, double* history)
+      : law_(law), crack_(*law.crack), g_(g), k_(k), s_(s), touch_(touch), history_(history),
+        touching_(touch != 0), before_(k.overlap + s.dt * k.vn), half_step_over_m_(0.5 * s.dt / g.effective_mass),
+        state_{history[crack_state], history[crack_state + 1], history[crack_state + 2], history[crack_state + 3]},
+        owed_(touching_ && s.update_history ? history[lent_force] : 0.0) {}
+  ContactForce run();
+
+ private:
   // The force at overlap xi, and the bulk force's power D xi'^2 there.
   struct Point {
     double force, bulk;
   };
-  auto at = [&](double xi, const models::CrackState& state) {
-    const auto [elastic, damping] = crack.force(g, xi, state);
+  // The rate at t_n of a force F_E + D xi' (the trapezoidal rule), or LAMMPS's half-step one.
+  double rate(double elastic, double damping) const {
+    return s_.corrected ? (-k_.vn - half_step_over_m_ * elastic) / (1.0 + half_step_over_m_ * damping) : -k_.vn;
+  }
+  Point at(double xi, const models::CrackState& state) const {
+    const auto [elastic, damping] = crack_.force(g_, xi, state);
     const double r = rate(elastic, damping);
     return Point{elastic + damping * r, damping * r * r};
-  };
-  auto force_at = [&](double xi, const models::CrackState& state) { return at(xi, state).force; };
+  }
+  void form();
+  void record(double elastic, double damping, double xi_rate, ContactForce& out);
 
-  models::CrackState state{history[crack_state], history[crack_state + 1], history[crack_state + 2],
-                           history[crack_state + 3]};
-  double formation_impulse = 0.0;  // over the part of the step since the contact formed, / dt
-  double lent = 0.0;                // see below
-  double formation_bulk = 0.0;      // the bulk force's work since the contact formed
-  const double owed = touching && s.update_history ? history[lent_force] : 0.0;
-  models::CrackAdvance advance;
-  double phi = 1.0;  // the part of the step the contact lasted
-  if (!touching) {
-    // It formed phi dt before now (K13 appendix B), at overlap 0, and its crack is fastest
-    // there. Its radius moves through stretches of that time that double from 2^-12 of it to
-    // 1/16, then stretches of 1/16 (BDF2's second order needs a uniform step): 23 crack steps,
-    // once per contact. One step of backward Euler would leave a 15 % short of the crack law's
-    // at t_H/100 (micrometre ice, T_vis = 1e-12 s), doubling stretches to the end 3 % short.
-    // The energy the crack releases is counted where it moves, and the impulse of the step is
-    // the trapezoidal rule's on the same stretches, so that the work of the elastic force is
-    // the one the energy budget counts.
-    double released = 0.0;
-    state = crack.form(g, released);
-    if (s.corrected && before < 0.0) phi = k.overlap / (k.overlap - before);
-    double from = 0.0;
-    Point at_from = at(0.0, state);
-    for (int j = -12; from < 1.0 && !advance.broken; j++) {
-      const double to = j <= -4 ? std::ldexp(1.0, j) : from + 1.0 / 16.0;
-      const models::CrackAdvance a =
-          crack.advance(g, from * k.overlap, to * k.overlap, (to - from) * phi * s.dt, state, models::Refinement::none);
-      released += a.dissipated;
-      advance.broken = a.broken;
-      const Point at_to = at(to * k.overlap, state);
-      const double mean = 0.5 * (at_from.force + at_to.force);
-      formation_impulse += mean * (to - from) * phi;
-      lent += mean * (to - from) * phi * (1.0 - 0.5 * (from + to)) * phi;
-      // The bulk force's work on the same stretches (a grows fastest first: a straight line
-      // from 0 to its end value missed 1e-2 of the impact energy at T_vis = 1e-10 s).
-      formation_bulk += 0.5 * (at_from.bulk + at_to.bulk) * (to - from) * phi * s.dt;
-      at_from = at_to;
-      from = to;
-    }
-    advance.dissipated = released;
-  } else if (s.update_history) {
+  const models::DemModel& law_;
+  const models::CrackContactLaw& crack_;
+  const models::ContactGeometry& g_;
+  const Kinematics& k_;
+  const StepSettings& s_;
+  int& touch_;
+  double* history_;
+  const bool touching_;
+  const double before_;  // the overlap at the step before
+  const double half_step_over_m_;
+  models::CrackState state_;
+  const double owed_;
+  models::CrackAdvance advance_;
+  double formation_impulse_ = 0.0;  // over the part of the step since the contact formed, / dt
+  double lent_ = 0.0;               // see run()
+  double formation_bulk_ = 0.0;     // the bulk force's work since the contact formed
+};
+
+// It formed phi dt before now (K13 appendix B), at overlap 0, and its crack is fastest there. Its
+// radius moves through stretches of that time that double from 2^-12 of it to 1/16, then
+// stretches of 1/16 (BDF2's second order needs a uniform step): 23 crack steps, once per contact.
+// One step of backward Euler would leave a 15 % short of the crack law's at t_H/100 (micrometre
+// ice, T_vis = 1e-12 s), doubling stretches to the end 3 % short. The energy the crack releases is
+// counted where it moves, and the impulse of the step is the trapezoidal rule's on the same
+// stretches, so that the work of the elastic force is the one the energy budget counts.
+void CrackContactStep::form() {
+  double released = 0.0;
+  state_ = crack_.form(g_, released);
+  const double phi = s_.corrected && before_ < 0.0 ? k_.overlap / (k_.overlap - before_) : 1.0;  // the part it lasted
+  double from = 0.0;
+  Point at_from = at(0.0, state_);
+  for (int j = -12; from < 1.0 && !advance_.broken; j++) {
+    const double to = j <= -4 ? std::ldexp(1.0, j) : from + 1.0 / 16.0;
+    const models::CrackAdvance a = crack_.advance(g_, from * k_.overlap, to * k_.overlap, (to - from) * phi * s_.dt,
+                                                  state_, models::Refinement::none);
+    released += a.dissipated;
+    advance_.broken = a.broken;
+    const Point at_to = at(to * k_.overlap, state_);
+    const double mean = 0.5 * (at_from.force + at_to.force);
+    formation_impulse_ += mean * (to - from) * phi;
+    lent_ += mean * (to - from) * phi * (1.0 - 0.5 * (from + to)) * phi;
+    // The bulk force's work on the same stretches (a grows fastest first: a straight line
+    // from 0 to its end value missed 1e-2 of the impact energy at T_vis = 1e-10 s).
+    formation_bulk_ += 0.5 * (at_from.bulk + at_to.bulk) * (to - from) * phi * s_.dt;
+    at_from = at_to;
+    from = to;
+  }
+  advance_.dissipated = released;
+}
+
+// The history at the step's end and the energies of the step.
+void CrackContactStep::record(double elastic, double damping, double xi_rate, ContactForce& out) {
+  const double elastic_energy = crack_.elastic_energy(g_, k_.overlap, state_), surface = crack_.surface_energy(g_, state_);
+  out.elastic = elastic_energy;
+  out.surface = surface;
+  if (!s_.update_history) return;
+  double* h = history_;
+  h[crack_state] = state_.contact_radius;
+  h[crack_state + 1] = state_.previous_radius;
+  h[crack_state + 2] = state_.previous_step;
+  h[crack_state + 3] = state_.older_radius;
+  if (touching_) {
+    // The crack's share, as velocity Verlet does the work: the elastic force's work over the
+    // step, (F_E,n-1 + F_E,n)/2 (xi_n - xi_n-1), less the change of the stored energy U. Like
+    // the law's own estimate (the release at fixed overlap, averaged over the step's two
+    // overlaps) it is K13's -int dU/da a' dt to second order, but it leaves no remainder: that
+    // one differs by E* (a_n - a_n-1)(xi_n - xi_n-1)^2 / 2 a step, 2e-3 of the impact energy
+    // where a relaxes fast after a snap-on (micrometre ice at half the sticking velocity).
+    const double elastic_before = h[last_force] - h[last_bulk_force];
+    out.crack_dissipated = h[last_stored] - (elastic_energy + surface) + 0.5 * (elastic_before + elastic) * (k_.overlap - before_);
+  }
+  h[last_stored] = elastic_energy + surface;
+  h[last_force] = elastic + damping * xi_rate;
+  // The bulk force's work as velocity Verlet does it: from t_{n-1} to t_n the kinetic energy
+  // at whole steps changes by exactly (dt/4)(F_{n-1} + F_n)(xi'_{n-1} + xi'_n), so that this
+  // part of it is the energy the bulk force took (a rectangle rule, D_n xi'_n^2 dt, is off by
+  // a first-order (dt/2) int D' xi'^2 dt as a grows: 1e-2 of the impact energy at t_H/100).
+  const double bulk = damping * xi_rate;
+  out.bulk_dissipated = touching_ ? 0.25 * s_.dt * (h[last_bulk_force] + bulk) * (h[last_rate] + xi_rate) : formation_bulk_;
+  h[last_bulk_force] = bulk;
+  h[last_rate] = xi_rate;
+}
+
+ContactForce CrackContactStep::run() {
+  ContactForce out;
+  if (!touching_ && k_.overlap <= 0.0) {
+    clear(touch_, history_, crack_history_size);
+    return out;
+  }
+  if (!touching_) {
+    form();
+  } else if (s_.update_history) {
     // (With `corrected` a step that one crack step breaks is divided by break_inside_step, which
     // times the break, into the 16 stretches the law would divide it into.)
-    advance = crack.advance(g, before, k.overlap, s.dt, state,
-                            s.corrected ? models::Refinement::unless_broken : models::Refinement::full);
+    advance_ = crack_.advance(g_, before_, k_.overlap, s_.dt, state_,
+                              s_.corrected ? models::Refinement::unless_broken : models::Refinement::full);
   }
-  if (s.update_history) out.crack_dissipated = advance.dissipated;
-
-  if (advance.broken && s.corrected && touching) {
-    if (break_inside_step(crack, g, before, k.overlap, s, history, owed, force_at, out, state)) {
-      clear(touch, history, crack_history_size);
+  if (s_.update_history) out.crack_dissipated = advance_.dissipated;
+  if (advance_.broken && s_.corrected && touching_) {
+    const auto force_at = [&](double xi, const models::CrackState& state) { return at(xi, state).force; };
+    if (break_inside_step(crack_, g_, before_, k_.overlap, s_, history_, owed_, force_at, out, state_)) {
+      clear(touch_, history_, crack_history_size);
       return out;
     }
     // Its stretches held the contact to the step's end where one crack step broke it: their end
-    // is the step's, in `state` (the next step's crack update, after these stretches, is backward
+    // is the step's, in `state_` (the next step's crack update, after these stretches, is backward
     // Euler's).
-    advance.broken = false;
+    advance_.broken = false;
   }
-  if (advance.broken) {  // K13's end, inside this step
-    clear(touch, history, crack_history_size);
+  if (advance_.broken) {  // K13's end, inside this step
+    clear(touch_, history_, crack_history_size);
     return out;
   }
-
-  if (s.update_history) touch = 1;  // (in LAMMPS's setup a new contact forms at the first step)
-  const auto [elastic, damping] = crack.force(g, k.overlap, state);
+  if (s_.update_history) touch_ = 1;  // (in LAMMPS's setup a new contact forms at the first step)
+  const auto [elastic, damping] = crack_.force(g_, k_.overlap, state_);
   const double xi_rate = rate(elastic, damping);
   const double fn = elastic + damping * xi_rate;
-  const double previous = history[last_force];
-  const double elastic_energy = crack.elastic_energy(g, k.overlap, state), surface = crack.surface_energy(g, state);
-  if (s.update_history) {
-    history[crack_state] = state.contact_radius;
-    history[crack_state + 1] = state.previous_radius;
-    history[crack_state + 2] = state.previous_step;
-    history[crack_state + 3] = state.older_radius;
-    if (touching) {
-      // The crack's share, as velocity Verlet does the work: the elastic force's work over the
-      // step, (F_E,n-1 + F_E,n)/2 (xi_n - xi_n-1), less the change of the stored energy U. Like
-      // the law's own estimate (the release at fixed overlap, averaged over the step's two
-      // overlaps) it is K13's -int dU/da a' dt to second order, but it leaves no remainder: that
-      // one differs by E* (a_n - a_n-1)(xi_n - xi_n-1)^2 / 2 a step, 2e-3 of the impact energy
-      // where a relaxes fast after a snap-on (micrometre ice at half the sticking velocity).
-      const double elastic_before = history[last_force] - history[last_bulk_force];
-      out.crack_dissipated = history[last_stored] - (elastic_energy + surface) +
-                             0.5 * (elastic_before + elastic) * (k.overlap - before);
-    }
-    history[last_stored] = elastic_energy + surface;
-    history[last_force] = fn;
-    // The bulk force's work as velocity Verlet does it: from t_{n-1} to t_n the kinetic energy
-    // at whole steps changes by exactly (dt/4)(F_{n-1} + F_n)(xi'_{n-1} + xi'_n), so that this
-    // part of it is the energy the bulk force took (a rectangle rule, D_n xi'_n^2 dt, is off by
-    // a first-order (dt/2) int D' xi'^2 dt as a grows: 1e-2 of the impact energy at t_H/100).
-    const double bulk = damping * xi_rate;
-    out.bulk_dissipated = touching ? 0.25 * s.dt * (history[last_bulk_force] + bulk) * (history[last_rate] + xi_rate)
-                                   : formation_bulk;
-    history[last_bulk_force] = bulk;
-    history[last_rate] = xi_rate;
-  }
-  out.elastic = elastic_energy;
-  out.surface = surface;
-  if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(m * k.overlap / fn) / s.dt;
-  tangential(law, g, k, s, fn, touching ? previous : fn, history, out);
+  const double previous = history_[last_force];
+  record(elastic, damping, xi_rate, out);
+  // Its rate is implicit with `corrected`: only the stiffness bounds the step.
+  if (s_.update_history && check_due(k_.overlap, history_[checked_overlap]))
+    out.check = check_crack_step(crack_, g_, k_.overlap, state_, {elastic, damping}, s_.dt, s_.corrected ? 0.0 : 0.5);
+  tangential(law_, g_, k_, s_, fn, touching_ ? previous : fn, history_, out);
   out.normal = fn;
   // The forming step's impulse; and the displacement its force would have made by now, which
   // the positions LAMMPS has at t_n lack (the force began before): (1/m) int (t_n - t) F dt, a
   // few 1e-3 of the impact energy in a snap-on. It is lent as a force m eps / dt^2 that moves
   // the pair by eps at the next step, which pays it back (momentum is unchanged after both).
-  if (s.corrected && !touching) {
-    out.normal = formation_impulse + 0.5 * fn + lent;
-    if (s.update_history) history[lent_force] = lent;
+  if (s_.corrected && !touching_) {
+    out.normal = formation_impulse_ + 0.5 * fn + lent_;
+    if (s_.update_history) history_[lent_force] = lent_;
   } else {
-    out.normal -= owed;
-    if (s.update_history) history[lent_force] = 0.0;
+    out.normal -= owed_;
+    if (s_.update_history) history_[lent_force] = 0.0;
   }
   return out;
 }
@@ -278,10 +302,11 @@ bool ContactForce::finite() const {
 
 ContactForce contact_step(const models::DemModel& law, const models::ContactGeometry& g, const Kinematics& k,
                           double release, const StepSettings& s, int& touch, double* history) {
-  if (law.crack) return crack_step(law, g, k, s, touch, history);
+  if (law.crack) return CrackContactStep(law, g, k, s, touch, history).run();
   ContactForce out;
   const bool touching = touch != 0;
-  const bool contact = k.overlap > 0.0 || (touching && k.overlap > release);
+  const double snap = law.normal->snap_overlap(g);  // where a contact forms (0: touching)
+  const bool contact = k.overlap > snap || (touching && k.overlap > release);
   const double before = k.overlap + s.dt * k.vn;  // the overlap at the step before
   if (!contact) {
     if (touching && s.corrected) {  // released inside the step, theta dt after the last one
@@ -299,13 +324,14 @@ ContactForce contact_step(const models::DemModel& law, const models::ContactGeom
   const double rate = -k.vn - (s.corrected ? 0.5 * s.dt * previous / g.effective_mass : 0.0);
   const double fn = normal_force(law, g, k.overlap, rate);
   if (s.update_history) history[last_force] = fn;
-  if (fn > 0.0 && k.overlap > 0.0) out.period_steps = std::numbers::pi * std::sqrt(g.effective_mass * k.overlap / fn) / s.dt;
+  if (s.update_history && check_due(k.overlap, history[checked_overlap]))
+    out.check = check_step(*law.normal, g, k.overlap, rate, s.dt, s.corrected ? 1.0 : 0.5);
   tangential(law, g, k, s, fn, touching ? previous : fn, history, out);
   out.normal = fn;
-  if (s.corrected && !touching) {  // formed inside the step, phi dt before now (or overlapping already)
-    const double phi = before < 0.0 ? k.overlap / (k.overlap - before) : 1.0;
-    const double first = normal_force(law, g, inside * k.overlap, rate);
-    const double middle = normal_force(law, g, 0.5 * k.overlap, rate);
+  if (s.corrected && !touching) {  // formed inside the step, phi dt before now (or within reach already)
+    const double phi = before < snap ? (k.overlap - snap) / (k.overlap - before) : 1.0;
+    const double first = normal_force(law, g, snap + inside * (k.overlap - snap), rate);
+    const double middle = normal_force(law, g, 0.5 * (snap + k.overlap), rate);
     out.normal = phi * (first + 4.0 * middle + fn) / 6.0 + 0.5 * fn;
   }
   return out;

@@ -6,17 +6,22 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <set>
 #include <string>
 
 #include "atom.h"
 #include "error.h"
+#include "fix.h"
 #include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 #include "utils.h"
 
 #include "bounce/api/front_door.hpp"
 #include "bounce/models/contact_law.hpp"
 #include "contact_step.h"
+#include "stop.h"
 
 using namespace LAMMPS_NS;
 
@@ -38,14 +43,22 @@ FixWallBounce::FixWallBounce(LAMMPS *instance, int narg, char **arg) : Fix(insta
 
   bounce::api::Inputs inputs;
   inputs["model"] = std::string(arg[6]);
+  std::set<std::string> seen;
   for (int k = 7; k < narg; k += 2) {
     if (k + 1 >= narg) error->all(FLERR, "fix wall/bounce: {} has no value (pairs of key value follow the model)", arg[k]);
-    if (inputs.count(arg[k])) error->all(FLERR, "fix wall/bounce: {} is given twice", arg[k]);
+    if (!seen.insert(arg[k]).second) error->all(FLERR, "fix wall/bounce: {} is given twice", arg[k]);
     if (std::strcmp(arg[k], "integration") == 0) {
       if (std::strcmp(arg[k + 1], "corrected") == 0) corrected_ = true;
       else if (std::strcmp(arg[k + 1], "plain") == 0) corrected_ = false;
       else error->all(FLERR, "fix wall/bounce: integration = {} is invalid: expected corrected or plain", arg[k + 1]);
     } else if (std::strcmp(arg[k], "rigid_wall") == 0) {
+      if (std::strcmp(arg[k + 1], "yes") == 0)
+        for (int m = 7; m + 1 < narg; m += 2)
+          if (std::strcmp(arg[m], "material2") == 0)
+            error->all(FLERR,
+                       "fix wall/bounce: material2 = {} is invalid: expected none with rigid_wall yes (a rigid wall "
+                       "has no elastic moduli; its surface energy is gamma2, by default the atom's)",
+                       arg[m + 1]);
       const std::string v = arg[k + 1];
       if (v != "yes" && v != "no") error->all(FLERR, "fix wall/bounce: rigid_wall = {} is invalid: expected yes or no", v);
       inputs["rigid_wall"] = v == "yes";
@@ -59,15 +72,18 @@ FixWallBounce::FixWallBounce(LAMMPS *instance, int narg, char **arg) : Fix(insta
     error->all(FLERR, "fix wall/bounce {}: {}", arg[6], e.what());
   }
 
-  restart_peratom = 0;
+  restart_peratom = 1;
   FixWallBounce::grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; i++) FixWallBounce::set_arrays(i);
 }
 
 FixWallBounce::~FixWallBounce()
 {
   atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(mass_rigid_);
   memory->destroy(state_);
 }
 
@@ -85,11 +101,80 @@ void FixWallBounce::init()
   if (!utils::strmatch(update->integrate_style, "^verlet"))
     error->all(FLERR, "fix wall/bounce needs run_style verlet");
   warned_ = false;
+  fix_rigid_ = nullptr;
+  for (int k = 0; k < modify->nfix; k++)
+    if (modify->fix[k]->rigid_flag) fix_rigid_ = modify->fix[k];
+}
+
+// Each owned atom's rigid body's mass (0 if none), refreshed where atoms were exchanged.
+void FixWallBounce::update_rigid_masses()
+{
+  int unused = 0;
+  const int *body = static_cast<const int *>(fix_rigid_->extract("body", unused));
+  const double *mass_body = static_cast<const double *>(fix_rigid_->extract("masstotal", unused));
+  if (!body || !mass_body) error->all(FLERR, "fix wall/bounce: fix {} gives no bodies' masses", fix_rigid_->style);
+  if (atom->nmax > nmax_rigid_) {
+    memory->destroy(mass_rigid_);
+    nmax_rigid_ = atom->nmax;
+    memory->create(mass_rigid_, nmax_rigid_, "fix_wall_bounce:mass_rigid");
+  }
+  for (int i = 0; i < atom->nlocal; i++) mass_rigid_[i] = body[i] >= 0 ? mass_body[body[i]] : 0.0;
+}
+
+// m_eff against an immovable wall: the atom's mass, or its rigid body's.
+double FixWallBounce::mass(int i) const
+{
+  return fix_rigid_ && mass_rigid_[i] > 0.0 ? mass_rigid_[i] : atom->rmass[i];
 }
 
 void FixWallBounce::setup(int vflag)
 {
   post_force(vflag);
+}
+
+// The contact of atom i with a wall whose normal (into the box) is `sign` along the axis.
+bounce::lammps::Kinematics FixWallBounce::kinematics(int i, double sign, double overlap) const
+{
+  const double *v = atom->v[i], *o = atom->omega[i], r = atom->radius[i];
+  bounce::lammps::Kinematics k;
+  k.n[0] = k.n[1] = k.n[2] = 0.0;
+  k.n[axis_] = sign;
+  k.overlap = overlap;
+  k.vn = sign * v[axis_];
+  // The contact point's velocity in the tangent plane: v + omega x (-R n).
+  const double spin[3] = {-r * (o[1] * k.n[2] - o[2] * k.n[1]), -r * (o[2] * k.n[0] - o[0] * k.n[2]),
+                          -r * (o[0] * k.n[1] - o[1] * k.n[0])};
+  for (int d = 0; d < 3; d++) k.sliding[d] = v[d] + spin[d];
+  k.sliding[axis_] = 0.0;
+  return k;
+}
+
+// A contact whose step is a tenth of the explicit step's limit or more: a WARNING once per run
+// and rank; at the limit (unstable) LAMMPS stops (step_check.h).
+void FixWallBounce::report(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int i, double dt)
+{
+  if (c.check.stability >= 1.0)
+    bounce::lammps::stop_one(
+        lmp, fmt::format("fix wall/bounce: the time step is too long for the contact of atom {} with the wall at "
+                         "overlap {:.3g} m: the explicit step cannot integrate it (its energy grows each step); {} "
+                         "(docs/lammps.md, Time step)",
+                         atom->tag[i], k.overlap, c.check.describe(dt)));
+  if (warned_) return;
+  warned_ = true;
+  error->warning(FLERR,
+                 "fix wall/bounce: the contact of atom {} with the wall at overlap {:.3g} m is coarse for the time step: "
+                 "{}; bounce's laws need a tenth of that limit or less: use a smaller time step (docs/lammps.md, Time "
+                 "step)",
+                 atom->tag[i], k.overlap, c.check.describe(dt));
+}
+
+void FixWallBounce::not_finite(int i, const bounce::lammps::Kinematics &k, double dt)
+{
+  bounce::lammps::stop_one(
+      lmp, fmt::format("fix wall/bounce: the force on atom {} is not finite (overlap {:.6g} m, rate {:.6g} m/s, dt "
+                       "{:.6g} s): the time step is too large for this law, or an input extreme (docs/lammps.md, "
+                       "Time step)",
+                       atom->tag[i], k.overlap, -k.vn, dt));
 }
 
 void FixWallBounce::post_force(int)
@@ -98,10 +183,13 @@ void FixWallBounce::post_force(int)
   settings.dt = update->dt;
   settings.update_history = !update->setupflag;
   settings.corrected = corrected_ && settings.update_history;
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
-  const double *radius = atom->radius, *rmass = atom->rmass;
+  double **x = atom->x, **f = atom->f, **torque = atom->torque;
+  const double *radius = atom->radius;
   const int *mask = atom->mask;
+  if (fix_rigid_ && (neighbor->ago == 0 || !mass_rigid_)) update_rigid_masses();
   const bounce::models::DemModel &law = *law_;
+  // Does the law's contact form before touching (Maugis-Dugdale's zone)?
+  const bool snaps = law.snap_overlap(bounce::models::ContactGeometry{1.0, 1.0}) < 0.0;
 
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -116,39 +204,18 @@ void FixWallBounce::post_force(int)
         for (int m = 0; m < values; m++) slot[m] = 0.0;
         continue;
       }
-      if (!touch && overlap <= 0.0) continue;
+      if (!touch && overlap <= 0.0 && !snaps) continue;
       bounce::models::ContactGeometry g;
       g.effective_radius = radius[i];  // a flat wall
-      g.effective_mass = rmass[i];     // an immovable one
-      bounce::lammps::Kinematics k;
-      k.n[0] = k.n[1] = k.n[2] = 0.0;
-      k.n[axis_] = sign;
-      k.overlap = overlap;
-      k.vn = sign * v[i][axis_];
-      // The contact point's velocity in the tangent plane: v + omega x (-R n).
-      const double *o = omega[i];
-      const double spin[3] = {-radius[i] * (o[1] * k.n[2] - o[2] * k.n[1]), -radius[i] * (o[2] * k.n[0] - o[0] * k.n[2]),
-                              -radius[i] * (o[0] * k.n[1] - o[1] * k.n[0])};
-      for (int d = 0; d < 3; d++) k.sliding[d] = v[i][d] + spin[d];
-      k.sliding[axis_] = 0.0;
+      g.effective_mass = mass(i);      // an immovable one
+      if (!touch && snaps && overlap <= law.snap_overlap(g)) continue;  // out of the zone's reach
+      const bounce::lammps::Kinematics k = kinematics(i, sign, overlap);
       const double release = overlap > 0.0 ? 0.0 : law.normal->release_overlap(g);
       const bounce::lammps::ContactForce c =
           bounce::lammps::contact_step(law, g, k, release, settings, touch, slot + 1);
       slot[0] = touch;
-      if (!c.finite())
-        error->one(FLERR,
-                   "fix wall/bounce: the force on atom {} is not finite (overlap {:.6g} m, rate {:.6g} m/s, dt {:.6g} "
-                   "s): the time step is too large for this law, or an input extreme (docs/lammps.md, Time step)",
-                   atom->tag[i], k.overlap, -k.vn, settings.dt);
-      if (c.period_steps > 0.0 && c.period_steps < bounce::lammps::few_steps && !warned_) {
-        warned_ = true;
-        error->warning(FLERR,
-                       "fix wall/bounce: the contact of atom {} with the wall (overlap {:.3g} m, force {:.3g} N) has a "
-                       "period of {:.3g} steps of dt = {:.6g} s; bounce's laws need 20 or more for a COR to 1e-4, and "
-                       "with fewer than about 5 a collision can gain energy: use a smaller time step (docs/lammps.md, "
-                       "Time step)",
-                       atom->tag[i], k.overlap, c.normal, c.period_steps, settings.dt);
-      }
+      if (!c.finite()) not_finite(i, k, settings.dt);
+      if (c.check.stability > bounce::lammps::coarse_stability) report(c, k, i, settings.dt);
       for (int d = 0; d < 3; d++) f[i][d] += k.n[d] * c.normal + c.tangential[d];
       // Torque (-R n) x F^T, with lever arm R (as pair_style bounce).
       const double *ft = c.tangential;
@@ -189,4 +256,31 @@ int FixWallBounce::unpack_exchange(int nlocal, double *buf)
 {
   for (int m = 0; m < size_; m++) state_[nlocal][m] = buf[m];
   return size_;
+}
+
+// A restart file's per-atom record: its length, then the two walls' touch flags and histories.
+int FixWallBounce::pack_restart(int i, double *buf)
+{
+  buf[0] = size_ + 1;
+  for (int m = 0; m < size_; m++) buf[m + 1] = state_[i][m];
+  return size_ + 1;
+}
+
+void FixWallBounce::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;  // this fix's record among the atom's: skip the ones before it
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < size_; k++) state_[nlocal][k] = extra[nlocal][m++];
+}
+
+int FixWallBounce::size_restart(int)
+{
+  return size_ + 1;
+}
+
+int FixWallBounce::maxsize_restart()
+{
+  return size_ + 1;
 }

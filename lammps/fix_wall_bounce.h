@@ -40,8 +40,18 @@ class FixWallBounce : public Fix {
   void set_arrays(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  // Restart files keep each atom's touch flags and histories (the fix itself is given again).
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
 
  private:
+  bounce::lammps::Kinematics kinematics(int i, double sign, double overlap) const;
+  void report(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int i, double dt);
+  void update_rigid_masses();
+  [[noreturn]] void not_finite(int i, const bounce::lammps::Kinematics &k, double dt);
+  double mass(int i) const;
   static constexpr int values = 1 + bounce::lammps::history_size;  // per atom and wall: the touch flag, the history (no crack laws at walls)
   static constexpr int size_ = 2 * values;  // per atom: two walls
   int axis_;
@@ -50,7 +60,10 @@ class FixWallBounce : public Fix {
   bool corrected_ = true;
   std::shared_ptr<const bounce::models::DemModel> law_;
   double **state_;  // [atom][wall * values + k]
-  bool warned_ = false;  // a contact too stiff for dt was reported in this run
+  bool warned_ = false;  // a contact too coarse for dt was reported in this run
+  class Fix *fix_rigid_ = nullptr;  // m_eff is its body's mass (as fix wall/gran)
+  double *mass_rigid_ = nullptr;    // per atom: its body's mass, 0 if none
+  int nmax_rigid_ = 0;
 };
 
 }  // namespace LAMMPS_NS

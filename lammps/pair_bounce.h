@@ -14,7 +14,6 @@ PairStyle(bounce,PairBounce);
 #ifndef BOUNCE_LAMMPS_PAIR_BOUNCE_H
 #define BOUNCE_LAMMPS_PAIR_BOUNCE_H
 
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,13 +21,11 @@ PairStyle(bounce,PairBounce);
 #include "lmptype.h"
 #include "pair.h"
 
-namespace bounce::models {
-struct DemModel;
-struct ContactGeometry;
-}  // namespace bounce::models
 namespace bounce::lammps {
 struct ContactForce;
 struct Kinematics;
+struct StepSettings;
+struct TypeLaw;
 }  // namespace bounce::lammps
 
 namespace LAMMPS_NS {
@@ -42,23 +39,49 @@ class PairBounce : public Pair {
   void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
+#if BOUNCE_LAMMPS_TYPED_TRANSFER
+  void transfer_history(double *, double *, int, int) override;
+#else
   void transfer_history(double *, double *) override;
-
-  // The law of a type pair (for tests and the wall fix).
-  const bounce::models::DemModel *law(int itype, int jtype) const;
+#endif
+  // Restart files: pair_style's setting and every pair_coeff (pair_bounce_io.cpp).
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  // One pair's force (compute pair/local, compute fabric): pair_bounce_io.cpp.
+  double single(int, int, int, int, double, double, double, double &) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  double memory_usage() override;
 
  private:
-  struct TypePair;
   void allocate();
+  void set_law(int i, int j, std::shared_ptr<const bounce::lammps::TypeLaw> entry);
+  const bounce::lammps::TypeLaw *entry(int itype, int jtype) const;
   double reach(int itype, int jtype, double radius_i, double radius_j) const;
-  void coarse(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, tagint i, tagint j);
+  double cutoff(int i, int j) const;
+  void find_radii();
+  void find_rigid_and_frozen();
+  void update_rigid_masses();
+  double effective_mass(int i, int j) const;
+  void report(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int i, int j);
+  bool contact(int i, int j, int &touch, double *history, const bounce::lammps::StepSettings &s,
+               bounce::lammps::ContactForce &c, bounce::lammps::Kinematics &k);
+  void apply(int i, int j, const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int eflag);
+  [[noreturn]] void stop_one(const std::string &message);
 
-  std::vector<std::shared_ptr<const TypePair>> laws_;  // [itype * (ntypes + 1) + jtype]
+  std::vector<std::shared_ptr<const bounce::lammps::TypeLaw>> laws_;  // [itype * (ntypes + 1) + jtype]
   class FixNeighHistory *fix_history_;
-  std::vector<double> max_radius_;  // per type, over all atoms
+  std::vector<double> dynamic_radius_, frozen_radius_;  // per type: the largest, fix pour's and deposit's included
+  class Fix *fix_rigid_ = nullptr;  // m_eff takes its bodies' masses (as pair granular)
+  double *mass_rigid_ = nullptr;    // per atom: its body's mass, 0 if none
+  int nmax_rigid_ = 0;
+  int freeze_bit_ = 0;              // fix freeze's group: m_eff is the other atom's mass
   bool corrected_ = true;           // pair_style bounce integration corrected | plain
-  bool warned_ = false;             // a contact too stiff for dt was reported in this run
+  bool warned_ = false;             // a contact too coarse for dt was reported in this run
   int history_values_ = 0;          // per contact: history_size, or crack_history_size with krijt
+  int single_neighbor_ = 0;         // single(): where the last search of j in i's list ended
 };
 
 }  // namespace LAMMPS_NS

@@ -239,60 +239,47 @@ Batch prepare(const std::string& manifest) {
 
 }  // namespace
 
-BatchResult run_batch(const std::string& manifest, const std::optional<std::string>& checkpoint, bool progress) {
-  Mpi mpi;
-  BatchResult result;
-  result.printer = mpi.rank == 0;
-  std::exception_ptr error;
-  Batch b;
-  std::vector<std::string> mine;  // this rank's blocks, as text, in unit order
-  long loaded = 0;
-  try {
-    b = prepare(manifest);
-    if (checkpoint) std::filesystem::create_directories(*checkpoint);
-    Progress report("bounce fit --batch", progress && mpi.rank == 0);
-    for (const Unit& u : b.units) {
-      if (static_cast<int>(u.index % static_cast<std::size_t>(mpi.size)) != mpi.rank) continue;
-      auto points = load(checkpoint, b.prints[u.entry], u);
-      const bool computed = !points;
-      loaded += computed ? 0 : 1;
-      if (computed) points = b.jobs[u.entry].integrate(u.first, u.count);
-      mine.push_back(serialise(b.prints[u.entry], u, *points));
-      if (computed && checkpoint) save(*checkpoint, u, mine.back());
-      report(u.index + 1, b.units.size());
-    }
-  } catch (...) {
-    error = std::current_exception();
+namespace {
+
+// This rank's blocks, as text, in unit order: read from the checkpoint or integrated (and then
+// saved); `loaded` counts those read.
+std::vector<std::string> compute_mine(const Batch& b, const Mpi& mpi, const std::optional<std::string>& checkpoint,
+                                      bool progress, long& loaded) {
+  std::vector<std::string> mine;
+  if (checkpoint) std::filesystem::create_directories(*checkpoint);
+  Progress report("bounce fit --batch", progress && mpi.rank == 0);
+  for (const Unit& u : b.units) {
+    if (static_cast<int>(u.index % static_cast<std::size_t>(mpi.size)) != mpi.rank) continue;
+    auto points = load(checkpoint, b.prints[u.entry], u);
+    const bool computed = !points;
+    loaded += computed ? 0 : 1;
+    if (computed) points = b.jobs[u.entry].integrate(u.first, u.count);
+    mine.push_back(serialise(b.prints[u.entry], u, *points));
+    if (computed && checkpoint) save(*checkpoint, u, mine.back());
+    report(u.index + 1, b.units.size());
   }
-  // The lowest rank that failed speaks for the batch, through rank 0: one message, whichever
-  // ranks met it. The other ranks return quietly with exit code 0: OpenMPI's mpirun ends the
-  // whole job as soon as one process exits non-zero, which could kill rank 0 before it has
-  // printed the message. The job's exit code is rank 0's.
+  return mine;
+}
+
+// The lowest rank that failed speaks for the batch, through rank 0: one message, whichever
+// ranks met it. The other ranks return quietly with exit code 0: OpenMPI's mpirun ends the
+// whole job as soon as one process exits non-zero, which could kill rank 0 before it has
+// printed the message. The job's exit code is rank 0's. Returns whether a rank failed (rank 0
+// then throws).
+bool failed_somewhere(Mpi& mpi, std::exception_ptr error) {
   const int first = mpi.min(error ? mpi.rank : mpi.size);
-  if (first < mpi.size) {
+  if (first >= mpi.size) return false;
 #ifdef BOUNCE_HAVE_MPI
-    // No block has been sent yet, so tag 0 cannot meet one.
-    if (mpi.rank == first && first != 0) mpi.send(describe(error), 0);
-    if (mpi.rank == 0 && first != 0) error = revive(mpi.receive(first, 0), first);
+  // No block has been sent yet, so tag 0 cannot meet one.
+  if (mpi.rank == first && first != 0) mpi.send(describe(error), 0);
+  if (mpi.rank == 0 && first != 0) error = revive(mpi.receive(first, 0), first);
 #endif
-    if (mpi.rank == 0) std::rethrow_exception(error);
-    return result;
-  }
-  loaded = mpi.sum(loaded);
-  if (checkpoint && mpi.rank == 0) {
-    std::cerr << fmt::format("bounce fit --batch: {} of {} blocks read from the checkpoint {}\n", loaded, b.units.size(),
-                             *checkpoint);
-  }
-#ifdef BOUNCE_HAVE_MPI
-  if (mpi.rank != 0) {
-    std::size_t k = 0;
-    for (const Unit& u : b.units) {
-      if (static_cast<int>(u.index % static_cast<std::size_t>(mpi.size)) == mpi.rank) mpi.send(mine[k++], static_cast<int>(u.index));
-    }
-    return result;
-  }
-#endif
-  // Rank 0: the blocks in order, then each fit finished.
+  if (mpi.rank == 0) std::rethrow_exception(error);
+  return true;
+}
+
+// Rank 0: every block in unit order, each experiment's grid points gathered.
+std::vector<std::vector<analysis::GridPoint>> gather(const Batch& b, Mpi& mpi, const std::vector<std::string>& mine) {
   std::vector<std::vector<analysis::GridPoint>> points(b.entries.size());
   std::size_t k = 0;
   for (const Unit& u : b.units) {
@@ -308,6 +295,41 @@ BatchResult run_batch(const std::string& manifest, const std::optional<std::stri
     if (!block) throw std::logic_error("a block arrived damaged");
     points[u.entry].insert(points[u.entry].end(), block->begin(), block->end());
   }
+  return points;
+}
+
+}  // namespace
+
+BatchResult run_batch(const std::string& manifest, const std::optional<std::string>& checkpoint, bool progress) {
+  Mpi mpi;
+  BatchResult result;
+  result.printer = mpi.rank == 0;
+  std::exception_ptr error;
+  Batch b;
+  std::vector<std::string> mine;
+  long loaded = 0;
+  try {
+    b = prepare(manifest);
+    mine = compute_mine(b, mpi, checkpoint, progress, loaded);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  if (failed_somewhere(mpi, error)) return result;
+  loaded = mpi.sum(loaded);
+  if (checkpoint && mpi.rank == 0) {
+    std::cerr << fmt::format("bounce fit --batch: {} of {} blocks read from the checkpoint {}\n", loaded, b.units.size(),
+                             *checkpoint);
+  }
+#ifdef BOUNCE_HAVE_MPI
+  if (mpi.rank != 0) {
+    std::size_t k = 0;
+    for (const Unit& u : b.units) {
+      if (static_cast<int>(u.index % static_cast<std::size_t>(mpi.size)) == mpi.rank) mpi.send(mine[k++], static_cast<int>(u.index));
+    }
+    return result;
+  }
+#endif
+  std::vector<std::vector<analysis::GridPoint>> points = gather(b, mpi, mine);
   Value::List experiments;
   for (std::size_t e = 0; e < b.entries.size(); ++e) {
     Record r = b.jobs[e].finish(std::move(points[e]));

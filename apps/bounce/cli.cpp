@@ -158,7 +158,7 @@ int run(int argc, const char* const* argv) {
     return 2;
   }
   for (const Command& command : commands) {
-    if (command.app->parsed()) return run_guarded(command.run, command.options->all_names());
+    if (command.app->parsed()) return run_guarded(command.run, command.options->all_names(), command.options->inputs());
   }
   if (completion->parsed()) {
     return run_guarded([&app] {

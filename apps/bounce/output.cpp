@@ -172,7 +172,7 @@ void Progress::operator()(std::size_t done, std::size_t total) {
                            100.0 * static_cast<double>(done) / static_cast<double>(total), t);
 }
 
-int run_guarded(const std::function<int()>& body, const std::set<std::string>& options) {
+int run_guarded(const std::function<int()>& body, const std::set<std::string>& options, const api::Inputs& typed) {
   try {
     const int code = body();
     std::cout.flush();
@@ -181,7 +181,8 @@ int run_guarded(const std::function<int()>& body, const std::set<std::string>& o
       return 3;
     }
     return code;
-  } catch (const InvalidArgument& e) {
+  } catch (const InvalidArgument& caught) {
+    const InvalidArgument e = api::as_typed(caught, typed);
     const bool option = options.count(e.parameter()) > 0;
     std::cerr << "bounce: error: " << (option ? e.renamed(option_name(e.parameter())).what() : e.what()) << '\n';
     return 2;

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bounce/api/front_door.hpp"
 #include "bounce/core/record.hpp"
 
 namespace bounce::cli {
@@ -50,9 +51,9 @@ class Progress {
 };
 
 /// Runs a command under the error policy: InvalidArgument -> one line on stderr naming the
-/// option (a parameter in `options` as --name), exit 2; NumericalError -> one line, exit 3;
-/// anything else -> exit 4. A failed write to stdout is an error too (exit 3): the results
-/// did not arrive.
-int run_guarded(const std::function<int()>& body, const std::set<std::string>& options);
+/// option (a parameter in `options` as --name) and its value as typed (`typed`, the inputs
+/// given), exit 2; NumericalError -> one line, exit 3; anything else -> exit 4. A failed write
+/// to stdout is an error too (exit 3): the results did not arrive.
+int run_guarded(const std::function<int()>& body, const std::set<std::string>& options, const api::Inputs& typed = {});
 
 }  // namespace bounce::cli

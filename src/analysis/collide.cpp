@@ -11,6 +11,7 @@
 #include "bounce/analytic/adhesive.hpp"
 #include "bounce/analytic/master_curve.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/dynamics/adhesive_collision.hpp"
@@ -293,8 +294,8 @@ ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& mo
   s.characteristic_velocity = s.dissipative_constant > 0.0
                                   ? analytic::characteristic_velocity(s.dissipative_constant, s.force_constant, m)
                                   : std::numeric_limits<double>::infinity();
-  s.reference_overlap = std::pow(1.25 * m * velocity * velocity / s.force_constant, 0.4);  // (8.65)
-  s.hertz_contact_time = analytic::hertz_contact_time(s.force_constant, m, velocity);
+  s.reference_overlap = contact::hertz::reference_overlap(s.force_constant, m, velocity);
+  s.hertz_contact_time = contact::hertz::collision_time(s.force_constant, m, velocity);
   return s;
 }
 

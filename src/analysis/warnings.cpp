@@ -8,6 +8,7 @@
 
 #include "bounce/analytic/adhesive.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/contact/jkr.hpp"
 #include "bounce/contact/surface_forces.hpp"
 
@@ -29,7 +30,7 @@ struct CollisionTime {
   const char* name;
 };
 CollisionTime collision_time(const CollisionOutcome& out, const Pair& pair, double velocity) {
-  const double hertz = analytic::hertz_contact_time(pair.hertz_constant(), pair.effective_mass(), velocity);
+  const double hertz = contact::hertz::collision_time(pair.hertz_constant(), pair.effective_mass(), velocity);
   if (out.outcome == dynamics::Outcome::stick && hertz > out.contact_time) {
     return {hertz, "the elastic Hertz contact time (sticking stopped the integration earlier)"};
   }

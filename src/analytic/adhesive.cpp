@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/contact/independent.hpp"
 #include "bounce/contact/jkr.hpp"
 
@@ -44,7 +45,7 @@ double cor_jkr(double v, double v_c) {  // K13 (24)
 
 double cor_viscous_k13(double a, double t_h) { return 1.0 - 5.57 * a / t_h; }  // K13 (26)
 
-double cor_viscous_constant() { return 2.0 * b_constant() * 15.0 / 8.0 * hertz_scaled_contact_time(); }
+double cor_viscous_constant() { return 2.0 * b_constant() * 15.0 / 8.0 * contact::hertz::scaled_collision_time(); }
 
 double cor_independent(double e_jkr, double e_d) {  // K13 (27)
   const double radicand = e_jkr * e_jkr + e_d * e_d - 1.0;

@@ -5,6 +5,7 @@
 
 #include <boost/math/tools/roots.hpp>
 
+#include "bounce/contact/hertz.hpp"
 #include "bounce/core/checks.hpp"
 #include "master_curve_data.hpp"
 
@@ -125,15 +126,6 @@ double c1_constant() {  // BP04 (8.91)
   return std::sqrt(pi) / (std::pow(2.0, 0.2) * std::pow(5.0, 0.4)) * std::tgamma(0.6) / std::tgamma(2.1);
 }
 
-double hertz_scaled_contact_time() {  // 2 int_0^1 (1 - x^{5/2})^{-1/2} dx, a Beta function
-  static const double t = 0.8 * std::sqrt(pi) * std::tgamma(0.4) / std::tgamma(0.9);
-  return t;
-}
-
-double hertz_contact_time(double c0, double m, double g) {
-  return hertz_scaled_contact_time() * std::pow(1.25 * m / c0, 0.4) * std::pow(g, -0.2);
-}
-
 double hertz_contact_time_bshp96(double c0, double m, double g) {  // BSHP96 (A13)
   const double k = 0.8 * c0;
   return 2.94 * std::pow(m / k, 0.4) * std::pow(g, -0.2);
@@ -144,7 +136,7 @@ double hertz_contact_time_k13(double m, double r, double e_star, double v) {  //
 }
 
 double hertz_contact_time_k13_constant() {
-  return hertz_scaled_contact_time() * std::pow(15.0 / 16.0, 0.4);
+  return contact::hertz::scaled_collision_time() * std::pow(15.0 / 16.0, 0.4);
 }
 
 double power_law_kappa(double d1, double alpha, double d2, double beta, double gamma,

@@ -5,6 +5,7 @@
 #include "binding.hpp"
 #include "bounce/analytic/master_curve.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/core/error.hpp"
 
 namespace bounce::api {
@@ -61,7 +62,7 @@ Record coefficients() {
 Record contact_times(const Case& c, const analysis::ViscoelasticScales& s, double velocity) {
   const double m = c.pair.effective_mass(), k = s.kappa;
   return Record()
-      .set("hertz_exact", analytic::hertz_contact_time(s.force_constant, m, velocity))
+      .set("hertz_exact", contact::hertz::collision_time(s.force_constant, m, velocity))
       .set("bshp96_a13", analytic::hertz_contact_time_bshp96(s.force_constant, m, velocity))
       .set("k13_22", analytic::hertz_contact_time_k13(m, c.pair.effective_radius(), c.pair.effective_modulus(), velocity))
       .set("viscoelastic_overlap",

@@ -31,6 +31,9 @@ std::vector<double> parse_range(const std::string& name, const std::string& text
 /// "LO:HI" with 0 < LO < HI; errors name `name`.
 std::array<double, 2> parse_interval(const std::string& name, const std::string& text);
 
+/// The commands of the front door, in the order `bounce --help` lists them (command_table.cpp).
+std::vector<CommandSpec> make_commands();
+
 /// The tangential law's parameters (they need a tangential velocity).
 inline constexpr std::array<const char*, 5> tangential_names = {"friction", "asperity", "shear_damping",
                                                                 "tangential_law", "asperity_form"};

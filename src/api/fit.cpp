@@ -20,12 +20,7 @@ namespace {
 
 using detail::Plan;
 using detail::split;
-using detail::trial_inputs;
-
-// A trial's case: the fit command's binding of the fixed inputs with the collision values set.
-Case trial_case(const Plan& plan, std::span<const double> values) {
-  return detail::make_case(detail::bind_inputs(command("fit"), trial_inputs(plan, values)));
-}
+using detail::trial_case;
 
 Table profile_table(const analysis::Profile& p) {
   Table t;
@@ -71,22 +66,16 @@ void add_information_criteria(Record& r, std::size_t n, std::size_t k, double fi
   r.set("bic", fit_term + kk * std::log(nn));
 }
 
-Record fit_record(const Plan& plan, const analysis::Experiment& data, const analysis::FitResult& f, bool timing) {
-  Record r;
-  r.set("model", plan.model);
-  r.set("data", data.source);
-  r.set("fitted", f.names);
-  r.set("best", values_record(f.names, f.best.values));
-  r.set("chi2", f.best.chi2);
-  r.set("ranges", ranges_record(f.names, f.ranges));
+// The normalised values and the scales K13 Figs 7 and 8 plot against: the reduced radius, the
+// normalisations, and the plastic length scale (33) at half the largest measured speed (K13
+// §4.2.2).
+void add_scales(Record& r, const Plan& plan, const analysis::Experiment& data, const analysis::FitResult& f) {
   Record normalised;
   for (std::size_t a = 0; a < f.names.size(); ++a) {
     if (f.names[a] == "gamma" && plan.gamma_l) normalised.set("gamma_over_gamma_L", f.best.values[a] / *plan.gamma_l);
     if (f.names[a] == "yield") normalised.set("yield_over_E_soft", f.best.values[a] / plan.e_soft);
   }
   r.set("normalised", std::move(normalised));
-  // The scales K13 Figs 7 and 8 plot against: the reduced radius, the normalisations, and
-  // the plastic length scale (33) at half the largest measured speed (K13 §4.2.2).
   const Pair& pair = *plan.pair;
   double v_max = 0.0;
   for (const auto& m : data.points) v_max = std::max(v_max, m.velocity);
@@ -99,6 +88,10 @@ Record fit_record(const Plan& plan, const analysis::Experiment& data, const anal
                                                                       pair.effective_radius(), pair.effective_modulus()));
   }
   r.set("scales", std::move(scales));
+}
+
+// The grid's best, its extent and the profiles.
+void add_grid(Record& r, const analysis::FitResult& f) {
   r.set("grid_best", values_record(f.names, f.grid_best.values));
   r.set("grid_chi2", f.grid_best.chi2);
   Record grid, profiles;
@@ -109,7 +102,10 @@ Record fit_record(const Plan& plan, const analysis::Experiment& data, const anal
   }
   r.set("grid", std::move(grid));
   r.set("profiles", std::move(profiles));
-  r.set("points", points_table(data, f.cor));
+}
+
+// With errors given, the proper chi^2 and its intervals; the information criteria either way.
+void add_statistics(Record& r, const analysis::Experiment& data, const analysis::FitResult& f) {
   const std::size_t n = data.points.size(), k = f.names.size();
   if (f.weighted_best) {
     r.set("chi2_weighted", f.weighted_best->chi2);
@@ -120,18 +116,34 @@ Record fit_record(const Plan& plan, const analysis::Experiment& data, const anal
   } else {
     add_information_criteria(r, n, k, static_cast<double>(n) * std::log(std::max(f.best.chi2, 1e-300)));
   }
+}
+
+Record timing_record(const analysis::FitResult& f) {
+  return Record()
+      .set("grid_collisions", f.collision_seconds)
+      .set("grid_collisions_cpu", f.collision_cpu_seconds)
+      .set("cost_per_collision", f.collision_cpu_seconds / static_cast<double>(f.grid_collisions))
+      .set("plastic", f.plastic_seconds)
+      .set("chi2", f.chi2_seconds)
+      .set("refinement", f.refine_seconds);
+}
+
+Record fit_record(const Plan& plan, const analysis::Experiment& data, const analysis::FitResult& f, bool timing) {
+  Record r;
+  r.set("model", plan.model);
+  r.set("data", data.source);
+  r.set("fitted", f.names);
+  r.set("best", values_record(f.names, f.best.values));
+  r.set("chi2", f.best.chi2);
+  r.set("ranges", ranges_record(f.names, f.ranges));
+  add_scales(r, plan, data, f);
+  add_grid(r, f);
+  r.set("points", points_table(data, f.cor));
+  add_statistics(r, data, f);
   r.set("collisions", f.collisions);
   r.set("failed_trials", f.failed_trials);
   r.set("warnings", f.warnings);
-  if (timing) {
-    r.set("timing", Record()
-                        .set("grid_collisions", f.collision_seconds)
-                        .set("grid_collisions_cpu", f.collision_cpu_seconds)
-                        .set("cost_per_collision", f.collision_cpu_seconds / static_cast<double>(f.grid_collisions))
-                        .set("plastic", f.plastic_seconds)
-                        .set("chi2", f.chi2_seconds)
-                        .set("refinement", f.refine_seconds));
-  }
+  if (timing) r.set("timing", timing_record(f));
   return r;
 }
 

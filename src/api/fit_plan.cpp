@@ -136,15 +136,16 @@ std::vector<double> default_grid(const detail::Plan& plan, const ParameterSpec& 
 
 }  // namespace
 
-// A trial's inputs: the fixed ones with the fitted values set (gamma: both bodies').
-Inputs detail::trial_inputs(const detail::Plan& plan, std::span<const double> values) {
-  Inputs in = plan.fixed;
+// A trial's case: the fixed inputs as bound once, the fitted values set (gamma: both bodies').
+Case detail::trial_case(const detail::Plan& plan, std::span<const double> values) {
+  detail::Bound b = plan.bound;
   for (std::size_t a = 0; a < values.size(); ++a) {
     const std::string& name = plan.fitted[a].name;
-    in[name] = values[a];
-    if (name == "gamma") in["gamma2"] = values[a];
+    Parameters& group = b.pair.spec(name) != nullptr ? b.pair : b.model_parameters;
+    group.set(name, values[a]);
+    if (name == "gamma") b.pair.set("gamma2", values[a]);
   }
-  return in;
+  return detail::make_case(b);
 }
 
 detail::Plan detail::make_plan(const Bound& bound, const Inputs& inputs, const std::string& model) {
@@ -165,6 +166,7 @@ detail::Plan detail::make_plan(const Bound& bound, const Inputs& inputs, const s
   if (!plan.fixed.count("adhesive_tolerance") && models::model_registry().at(model).traits.engine != models::Engine::force_law) {
     plan.fixed["adhesive_tolerance"] = fit_adhesive_tolerance;
   }
+  plan.bound = bind_inputs(command("fit"), plan.fixed);
   const Pair& pair = plan.pair.emplace(bounce::make_pair(bound.pair));
   plan.gamma_l = pair.surface_energy();
   const double e1 = pair.body1().material.youngs_modulus, e2 = pair.body2().material.youngs_modulus;

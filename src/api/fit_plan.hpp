@@ -17,6 +17,7 @@ struct Plan {
   std::vector<ParameterSpec> fitted;  // collision parameters first, yield last
   std::vector<analysis::FitAxis> axes;
   Inputs fixed;   // the user's inputs without the fit command's own
+  Bound bound;    // those bound once: a trial sets its values in them (trial_case)
   std::optional<Pair> pair;  // the pair as given (gamma_L, E_soft, the speeds it takes)
   std::optional<double> gamma_l;
   double e_soft = 0.0;
@@ -25,8 +26,9 @@ struct Plan {
 /// The plan of bound inputs for `model` (InvalidArgument for a parameter that cannot be
 /// fitted, a grid out of its declared range, a fixed value of a fitted parameter).
 Plan make_plan(const Bound& bound, const Inputs& inputs, const std::string& model);
-/// A trial's inputs: the fixed ones with the fitted collision values set (gamma: both bodies').
-Inputs trial_inputs(const Plan& plan, std::span<const double> values);
+/// A trial's case: the bound fixed inputs with the fitted values set (gamma: both bodies'), no
+/// text read again.
+Case trial_case(const Plan& plan, std::span<const double> values);
 /// "a,b,c" split at `separator`.
 std::vector<std::string> split(const std::string& text, char separator);
 

@@ -35,6 +35,19 @@ double max_pressure(double force, double contact_radius) {  // BP04 (8.10) at th
   return 3.0 * force / (2.0 * std::numbers::pi * contact_radius * contact_radius);
 }
 
+double reference_overlap(double hertz_constant, double effective_mass, double speed) {  // BP04 (8.65)
+  return std::pow(1.25 * effective_mass * speed * speed / hertz_constant, 0.4);
+}
+
+double scaled_collision_time() {  // 2 int_0^1 (1 - x^{5/2})^{-1/2} dx, a Beta function
+  static const double t = 0.8 * std::sqrt(std::numbers::pi) * std::tgamma(0.4) / std::tgamma(0.9);
+  return t;
+}
+
+double collision_time(double hertz_constant, double effective_mass, double speed) {  // BSHP96 (A13), exact
+  return scaled_collision_time() * std::pow(1.25 * effective_mass / hertz_constant, 0.4) * std::pow(speed, -0.2);
+}
+
 }  // namespace bounce::contact::hertz
 
 // --- the "hertz" contact law -----------------------------------------------------

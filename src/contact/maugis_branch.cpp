@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/minima.hpp>
@@ -106,12 +108,18 @@ Branch::Branch(double lambda) : lambda_(lambda) {
   const double below = fold_place_.contact ? fold_place_.value : top;
   pull_off_place_ = {true, minimum([&](double t) { return contact_at(lambda, std::tan(t)).point.force; }, 1e-300, below)};
   pull_off_ = at(pull_off_place_);
-  const auto cells = static_cast<std::size_t>((work_top - work_bottom) / work_spacing);
-  work_.assign(cells + 1, 0.0);
-  for (std::size_t i = 1; i <= cells; ++i) {
-    const double upper = work_top - double(i - 1) * work_spacing;
-    work_[i] = work_[i - 1] + work_over(lambda, upper - work_spacing, upper, false);
-  }
+}
+
+const std::vector<double>& Branch::work() const {
+  std::call_once(work_made_, [this] {
+    const auto cells = static_cast<std::size_t>((work_top - work_bottom) / work_spacing);
+    work_.assign(cells + 1, 0.0);
+    for (std::size_t i = 1; i <= cells; ++i) {
+      const double upper = work_top - double(i - 1) * work_spacing;
+      work_[i] = work_[i - 1] + work_over(lambda_, upper - work_spacing, upper, false);
+    }
+  });
+  return work_;
 }
 
 BranchPoint Branch::at(const Place& place) const {
@@ -140,15 +148,34 @@ Place Branch::place_at_overlap(double overlap) const {
   const double s_top = fold_place_.contact ? std::tan(fold_place_.value) : std::tan(0.5 * pi * (1.0 - 1e-15));
   auto residual = [&](double log_s) { return contact_at(lambda_, std::exp(log_s)).point.overlap - overlap; };
   const double hi_log = std::log(s_top);
+  // An overlap within rounding of the fold's: s_top's round trip through the log can land where
+  // Delta is a hair above it. The fold is the state there.
+  if (residual(hi_log) >= 0.0) return fold_place_.contact ? fold_place_ : Place{true, std::atan(s_top)};
   double lo_log = hi_log - 1.0;
   while (residual(lo_log) < 0.0) {
     lo_log -= 2.0 * (hi_log - lo_log);
     if (lo_log < -700.0) throw NumericalError("Maugis-Dugdale: the overlap is beyond double precision");
   }
   std::uintmax_t iterations = 200;
-  const auto [x0, x1] = boost::math::tools::toms748_solve(residual, lo_log, hi_log,
-                                                          boost::math::tools::eps_tolerance<double>(52), iterations);
-  return {true, std::atan(std::exp(0.5 * (x0 + x1)))};
+  try {
+    const auto [x0, x1] = boost::math::tools::toms748_solve(residual, lo_log, hi_log,
+                                                            boost::math::tools::eps_tolerance<double>(52), iterations);
+    return {true, std::atan(std::exp(0.5 * (x0 + x1)))};
+  } catch (const std::domain_error& e) {  // Boost's "do not bracket": bounce's own error
+    throw NumericalError(std::string("Maugis-Dugdale: no state found at this overlap (") + e.what() + ")");
+  }
+}
+
+double Branch::zero_force_overlap() const {
+  // P rises from the pull-off (its least) as the contact grows (s falls): one root below s_pull.
+  auto force = [&](double log_s) { return contact_at(lambda_, std::exp(log_s)).point.force; };
+  const double hi = std::log(std::tan(pull_off_place_.value));
+  double lo = hi - 1.0;
+  while (force(lo) < 0.0) lo -= 2.0 * (hi - lo);
+  std::uintmax_t iterations = 200;
+  const auto [x0, x1] = boost::math::tools::toms748_solve(force, lo, hi, boost::math::tools::eps_tolerance<double>(52),
+                                                          iterations);
+  return contact_at(lambda_, std::exp(0.5 * (x0 + x1))).point.overlap;
 }
 
 double Branch::energy(const Place& place) const {
@@ -158,10 +185,11 @@ double Branch::energy(const Place& place) const {
   const double x = std::log(std::tan(place.value));
   const double base = zone_alone_energy(lambda_, zone_at_touch_);
   if (x >= work_top) return base - work_over(lambda_, work_top, x, true);
+  const std::vector<double>& work = this->work();
   const double cells = (work_top - x) / work_spacing;
-  if (cells >= double(work_.size() - 1)) return base + work_.back() + work_over(lambda_, x, work_bottom, true);
+  if (cells >= double(work.size() - 1)) return base + work.back() + work_over(lambda_, x, work_bottom, true);
   const auto i = static_cast<std::size_t>(cells);
-  return base + work_[i] + work_over(lambda_, x, work_top - double(i) * work_spacing, false);
+  return base + work[i] + work_over(lambda_, x, work_top - double(i) * work_spacing, false);
 }
 
 double Branch::surface_energy_at_overlap(double overlap, const Branch& down, const Branch& up) const {

@@ -222,6 +222,16 @@ const ParameterValue* value_or_default(const Parameters& p, std::string_view nam
 
 bool Parameters::given(std::string_view name) const { return values_.find(name) != values_.end(); }
 
+void Parameters::set(std::string_view name, double value) {
+  const ParameterSpec* s = spec(name);
+  if (s == nullptr || s->kind != ParameterKind::real || !s->range.contains(value)) {
+    throw std::logic_error(fmt::format("Parameters::set({}, {}): not a real parameter of these, or out of its range",
+                                       name, value));
+  }
+  values_.insert_or_assign(std::string(name), value);
+  typed_.insert_or_assign(std::string(name), value);
+}
+
 std::string Parameters::typed(std::string_view name) const {
   const auto it = typed_.find(name);
   return it == typed_.end() ? std::string() : value_text(it->second);

@@ -26,10 +26,11 @@ inline bool crosses(double ga, double gb, int direction) {
 }
 
 /// The bracket [lo, hi] of the zero of g in [a, b], ga = g(a) and gb = g(b) of opposite
-/// signs, narrowed by TOMS 748 to the last bits (gb == 0: the end itself).
+/// signs, narrowed by TOMS 748 to the last bits (gb == 0: the end itself; b <= a, a grazing
+/// minimum found at the window's start within round-off: that point).
 template <class G>
 std::pair<double, double> crossing(const G& g, double a, double b, double ga, double gb) {
-  if (gb == 0.0) return {b, b};
+  if (gb == 0.0 || !(a < b)) return {b, b};
   std::uintmax_t iterations = 100;
   return boost::math::tools::toms748_solve(g, a, b, ga, gb, boost::math::tools::eps_tolerance<double>(52), iterations);
 }

@@ -7,6 +7,7 @@
 #include <numbers>
 
 
+#include "bounce/contact/hertz.hpp"
 #include "bounce/contact/jkr.hpp"
 #include "bounce/models/crack.hpp"
 #include "bounce/models/krijt.hpp"
@@ -30,7 +31,7 @@ struct Scales {
 // `release`: the overlap where an adhesive contact breaks (JKR's delta_c, or another branch's fold).
 inline Scales scales_for(const models::KrijtParameters& p, double speed, double release) {
   const double rho = hertz_constant(p.effective_modulus, p.effective_radius);
-  const double xi0 = std::pow(1.25 * p.effective_mass * speed * speed / rho, 0.4);  // BP04 (8.65)
+  const double xi0 = contact::hertz::reference_overlap(rho, p.effective_mass, speed);
   const contact::jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
   Scales s;
   s.length = std::max(xi0, std::abs(release));
@@ -47,7 +48,7 @@ inline Scales scales_for(const models::KrijtParameters& p, double speed) {
 // Elastic Hertz contact time in the scaled units (a time scale for budgets and sampling).
 inline double scaled_hertz_time(const models::KrijtParameters& p, double speed, const Scales& s) {
   const double rho = hertz_constant(p.effective_modulus, p.effective_radius);
-  return 3.0 * std::pow(1.25 * p.effective_mass / rho, 0.4) * std::pow(speed, -0.2) / s.time;
+  return contact::hertz::collision_time(rho, p.effective_mass, speed) / s.time;
 }
 
 // Where the crack runs (beta near k: closing at a speed that diverges; beta near 1/k:

@@ -65,12 +65,12 @@ class AdhesiveViscoelasticForce final : public NormalForceModel {
 
 // B of BP04 (8.57): given, from eta1, eta2 ((8.58) corrected: B = alpha beta =
 // (3 eta2 - eta1)(1 + nu)(1 - 2 nu) / (3 E nu), docs/adhesive.md), or A.
-double dissipative_constant_b(const Pair& pair, const Parameters& p, double a) {
-  if (p.given("B")) return *p.real("B");
-  if (p.given("eta1") && p.given("eta2")) {
+double dissipative_constant_b(const Pair& pair, const AdhesiveViscousParameters& p, double a) {
+  if (p.dissipative_constant_b) return *p.dissipative_constant_b;
+  if (p.shear_viscosity && p.bulk_viscosity) {
     const Material& m = pair.body1().material;
     const double nu = m.poisson_ratio;
-    return (3.0 * *p.real("eta2") - *p.real("eta1")) * (1.0 + nu) * (1.0 - 2.0 * nu) / (3.0 * m.youngs_modulus * nu);
+    return (3.0 * *p.bulk_viscosity - *p.shear_viscosity) * (1.0 + nu) * (1.0 - 2.0 * nu) / (3.0 * m.youngs_modulus * nu);
   }
   // With equal relaxation times of shear and dilatation (eta_i = E_i tau) both A and
   // B equal tau (docs/adhesive.md), so B = A is the one-parameter choice.
@@ -98,7 +98,8 @@ class AdhesiveViscoelasticContact final : public ContactLaw {
 
 }  // namespace
 
-std::shared_ptr<const ContactLaw> adhesive_viscoelastic_contact(const Pair& pair, const Parameters& p) {
+std::shared_ptr<const ContactLaw> adhesive_viscoelastic_contact(const Pair& pair, const AdhesiveViscousParameters& p,
+                                                                const Context&) {
   const double gamma = detail::adhesive_surface_energy(pair, "adhesive-viscoelastic");
   const double a = detail::dissipative_constant(pair, p, "adhesive-viscoelastic");
   return std::make_shared<AdhesiveViscoelasticContact>(pair.effective_modulus(), gamma, a,
@@ -109,7 +110,7 @@ std::unique_ptr<NormalForceModel> make_adhesive_viscoelastic_force(const Adhesiv
   return std::make_unique<AdhesiveViscoelasticForce>(p);
 }
 
-Model make_adhesive_viscoelastic(const Pair& pair, const Parameters& p) {
+Model make_adhesive_viscoelastic(const Pair& pair, const AdhesiveViscousParameters& p, const Context&) {
   const double gamma = detail::adhesive_surface_energy(pair, "adhesive-viscoelastic");
   const double dissipative = detail::dissipative_constant(pair, p, "adhesive-viscoelastic");
   const AdhesiveViscoelasticParameters a =
@@ -120,7 +121,7 @@ Model make_adhesive_viscoelastic(const Pair& pair, const Parameters& p) {
   m.hertz = HertzScaling{a.rho, a.a};
   m.dissipative_constant = a.a;
   m.viscous_time = detail::viscous_time(pair, p, a.a);
-  m.z0 = *p.real("z0");
+  m.z0 = p.z0;
   return m;
 }
 

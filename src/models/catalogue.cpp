@@ -79,4 +79,55 @@ ParameterSpec power_gamma() {
               "power-law overlap exponent gamma of the dissipative term (default 0.5)", 0.5);
 }
 
+const FieldTable<NoParameters>& no_fields() {
+  static const FieldTable<NoParameters> table{};
+  return table;
+}
+
+const FieldTable<ViscousParameters>& viscous_fields() {
+  using S = ViscousParameters;
+  static const FieldTable<S> table{{dissipative_constant(), &S::dissipative_constant},
+                                   {shear_viscosity(), &S::shear_viscosity},
+                                   {bulk_viscosity(), &S::bulk_viscosity},
+                                   {relaxation_time(), &S::relaxation_time}};
+  return table;
+}
+
+const FieldTable<PowerLawParameters>& power_law_fields() {
+  using S = PowerLawParameters;
+  static const FieldTable<S> table{{power_d1(), &S::d1},
+                                   {power_alpha(), &S::alpha},
+                                   {power_d2(), &S::d2},
+                                   {power_beta(), &S::beta},
+                                   {power_gamma(), &S::gamma}};
+  return table;
+}
+
+const FieldTable<AdhesiveViscousParameters>& adhesive_viscous_fields() {
+  using S = AdhesiveViscousParameters;
+  static const FieldTable<S> table{{dissipative_constant(), &S::dissipative_constant},
+                                   {shear_viscosity(), &S::shear_viscosity},
+                                   {bulk_viscosity(), &S::bulk_viscosity},
+                                   {relaxation_time(), &S::relaxation_time},
+                                   {dissipative_constant_b(), &S::dissipative_constant_b},
+                                   {z0(), &S::z0}};
+  return table;
+}
+
+const FieldTable<ContactModelParameters>& contact_fields() {
+  using S = ContactModelParameters;
+  static const FieldTable<S> table{
+      {relaxation_time(), &S::relaxation_time}, {dissipative_constant(), &S::dissipative_constant}, {z0(), &S::z0}};
+  return table;
+}
+
+const FieldTable<CrackModelParameters>& crack_fields() {
+  using S = CrackModelParameters;
+  static const FieldTable<S> table{{relaxation_time(), &S::relaxation_time},
+                                   {dissipative_constant(), &S::dissipative_constant},
+                                   {krijt_z0(), &S::z0},
+                                   {k(), &S::k}};
+  return table;
+}
+
 }  // namespace bounce::models::catalogue

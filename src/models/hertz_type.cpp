@@ -25,15 +25,15 @@ double HertzTypeForce::reference_overlap(double speed) const {  // BP04 (8.65), 
 
 namespace {
 // BP04 (8.38) is derived for one material; a rigid wall does not deform.
-double from_viscosities(const Pair& pair, const Parameters& p) {
-  if (!p.given("eta1")) throw InvalidArgument("eta1", "(not given)", "a shear viscosity >= 0 Pa s");
-  if (!p.given("eta2")) throw InvalidArgument("eta2", "(not given)", "a bulk viscosity >= 0 Pa s");
-  const double eta1 = *p.real("eta1"), eta2 = *p.real("eta2");
+double from_viscosities(const Pair& pair, const ViscousParameters& p) {
+  if (!p.shear_viscosity) throw InvalidArgument("eta1", "(not given)", "a shear viscosity >= 0 Pa s");
+  if (!p.bulk_viscosity) throw InvalidArgument("eta2", "(not given)", "a bulk viscosity >= 0 Pa s");
+  const double eta1 = *p.shear_viscosity, eta2 = *p.bulk_viscosity;
   if (eta1 == 0.0 && eta2 == 0.0) return 0.0;
   const Material& m1 = pair.body1().material;
   const Material& m2 = pair.body2().material;
   if (!pair.body2().rigid && (m1.youngs_modulus != m2.youngs_modulus || m1.poisson_ratio != m2.poisson_ratio)) {
-    throw InvalidArgument("eta1", p.typed("eta1"),
+    throw InvalidArgument("eta1", format_value(eta1),
                           "viscosities only for bodies of one material (BP04 (8.38)); give A for unlike pairs");
   }
   if (m1.poisson_ratio <= 0.0) {
@@ -44,33 +44,29 @@ double from_viscosities(const Pair& pair, const Parameters& p) {
 }
 }  // namespace
 
-double dissipative_constant(const Pair& pair, const Parameters& p, std::string_view model) {
-  const bool a = p.given("A"), viscosities = p.given("eta1") || p.given("eta2"), tvis = p.given("tvis");
+double dissipative_constant(const Pair& pair, const ViscousParameters& p, std::string_view model) {
+  const bool a = p.dissipative_constant.has_value(), tvis = p.relaxation_time.has_value();
+  const bool viscosities = p.shear_viscosity || p.bulk_viscosity;
   if (a + viscosities + tvis > 1) {  // name the second way given: A beats eta1, eta2, which beat tvis
-    std::string second = "tvis";
-    for (const char* name : {"eta1", "eta2"}) {
-      if (a && p.given(name)) second = name;
-    }
-    throw InvalidArgument(second, p.typed(second),
+    std::pair<const char*, double> second{"tvis", p.relaxation_time.value_or(0.0)};
+    if (a && p.bulk_viscosity) second = {"eta2", *p.bulk_viscosity};
+    if (a && p.shear_viscosity) second = {"eta1", *p.shear_viscosity};
+    throw InvalidArgument(second.first, format_value(second.second),
                           "one of A, the viscosities eta1 and eta2, or T_vis, not two");
   }
-  if (a) return *p.real("A");
-  if (tvis) return krijt_dissipative_constant(*p.real("tvis"), pair);  // K13 after (18)
+  if (a) return *p.dissipative_constant;
+  if (tvis) return krijt_dissipative_constant(*p.relaxation_time, pair);  // K13 after (18)
   if (viscosities) return from_viscosities(pair, p);
   throw InvalidArgument("A", "(not given)",
                         fmt::format("a dissipative constant A >= 0 s, eta1 and eta2, or T_vis (model {})", model));
 }
 
-double viscous_time(const Pair& pair, const Parameters& p, double a) {
-  if (!(p.given("eta1") || p.given("eta2"))) return a;
+double viscous_time(const Pair& pair, const ViscousParameters& p, double a) {
+  if (!(p.shear_viscosity || p.bulk_viscosity)) return a;
   const Material& m = pair.body1().material;  // BSHP96 (B13): E1 = E/(1+nu), E2 = E/(3(1-2nu))
   const double e1 = m.youngs_modulus / (1.0 + m.poisson_ratio);
   const double e2 = m.youngs_modulus / (3.0 * (1.0 - 2.0 * m.poisson_ratio));
-  return std::max(p.real("eta1").value_or(0.0) / e1, p.real("eta2").value_or(0.0) / e2);
-}
-
-std::optional<contact::convex::Curvatures> curvatures(const Pair& pair, const Parameters& p) {
-  return contact::convex::curvatures_from(p, pair.body2().is_wall());
+  return std::max(p.shear_viscosity.value_or(0.0) / e1, p.bulk_viscosity.value_or(0.0) / e2);
 }
 
 HertzGeometry hertz_geometry(const Pair& pair, const std::optional<contact::convex::Curvatures>& shape) {
@@ -90,6 +86,42 @@ double adhesive_surface_energy(const Pair& pair, std::string_view model) {
   const std::string who = "model " + std::string(model);
   const double gamma = pair.require_surface_energy(who);
   return require_positive("gamma", gamma, fmt::format("surface energy gamma [J/m^2] ({} needs gamma > 0)", who));
+}
+
+// K13's parameters for the pair: gamma of the pair, T_vis, A (given, or T_vis / nu^2 by
+// K13 after (18)), z0 and k. krijt needs T_vis (its crack law); the others A or T_vis.
+KrijtParameters contact_parameters(const Pair& pair, const ContactModelParameters& p, std::string_view name,
+                                   std::optional<double> k) {
+  KrijtParameters out;
+  out.effective_radius = pair.effective_radius();
+  out.effective_modulus = pair.effective_modulus();
+  out.effective_mass = pair.effective_mass();
+  out.surface_energy = adhesive_surface_energy(pair, name);
+  if (p.relaxation_time) {
+    out.relaxation_time = *p.relaxation_time;
+  } else if (k || !p.dissipative_constant) {
+    throw InvalidArgument("tvis", "(not given)",
+                          fmt::format("a viscous relaxation time T_vis > 0 s (model {}{})", name, k ? "" : "; or A"));
+  }
+  out.dissipative_constant = p.dissipative_constant ? *p.dissipative_constant
+                                                     : krijt_dissipative_constant(out.relaxation_time, pair);
+  out.z0 = p.z0;
+  if (k) out.k = *k;
+  return out;
+}
+
+// The slots of a model with K13's parameters.
+Model contact_model(const KrijtParameters& k, const ContactModelParameters& p, NormalInteraction normal) {
+  Model m;
+  m.normal = std::move(normal);
+  m.dissipative_constant = k.dissipative_constant;
+  m.viscous_time = p.relaxation_time ? k.relaxation_time : k.dissipative_constant;
+  m.z0 = k.z0;
+  return m;
+}
+
+AdhesiveRelease adhesive_release(EndRule rule) {
+  return rule == EndRule::pull_off ? AdhesiveRelease::pull_off : AdhesiveRelease::fold;
 }
 
 }  // namespace bounce::models::detail

@@ -5,9 +5,11 @@
 #include <string_view>
 
 #include "bounce/contact/convex.hpp"
-#include "bounce/core/parameters.hpp"
 #include "bounce/contact/hertz.hpp"
 #include "bounce/models/contact_law.hpp"
+#include "bounce/models/krijt.hpp"
+#include "bounce/models/model.hpp"
+#include "bounce/models/model_parameters.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "bounce/pair/mixing.hpp"
 #include "bounce/pair/pair.hpp"
@@ -47,16 +49,12 @@ class HertzTypeContact final : public ContactLaw {
 
 /// A [s]: given, from eta1 and eta2 (BP04 (8.38), bodies of one material), or T_vis / nu^2
 /// (K13 after (18)); exactly one of these.
-double dissipative_constant(const Pair& pair, const Parameters& p, std::string_view model);
+double dissipative_constant(const Pair& pair, const ViscousParameters& p, std::string_view model);
 
 /// The viscous relaxation time that must be << t_c (BSHP96 (B12), BP04 (8.26)): with
 /// viscosities, BSHP96 (B13) tau_i = eta_i / E_i; otherwise A (for eta2/E2 = eta1/E1 = tau,
 /// (8.38) gives exactly A = tau).
-double viscous_time(const Pair& pair, const Parameters& p, double a);
-
-/// The curvatures given (curvature_radii, curvature_radii2, angle), if any; body 2 defaults
-/// to body 1's shape, or flat for a wall.
-std::optional<contact::convex::Curvatures> curvatures(const Pair& pair, const Parameters& p);
+double viscous_time(const Pair& pair, const ViscousParameters& p, double a);
 
 /// C0, the equivalent radius (a^2 = R xi) and m_eff: spheres and walls (rho of BP04
 /// (8.24)), or convex bodies (C0 of (8.21), the equal-area circle).
@@ -64,5 +62,14 @@ HertzGeometry hertz_geometry(const Pair& pair, const std::optional<contact::conv
 
 /// The pair's gamma, which adhesive models need > 0.
 double adhesive_surface_energy(const Pair& pair, std::string_view model);
+
+/// K13's parameters of a contact model for the pair: gamma (> 0), T_vis (required with a crack
+/// law's k, else T_vis or A), A (given, or T_vis / nu^2 by K13 after (18)), z0, and k.
+KrijtParameters contact_parameters(const Pair& pair, const ContactModelParameters& p, std::string_view model,
+                                   std::optional<double> k = std::nullopt);
+/// A contact model with those parameters and its normal interaction (A, viscous time, z0 set).
+Model contact_model(const KrijtParameters& k, const ContactModelParameters& p, NormalInteraction normal);
+/// Where a contact held on its adhesive branch breaks, by the end rule (pull-off, else the fold).
+AdhesiveRelease adhesive_release(EndRule rule);
 
 }  // namespace bounce::models::detail

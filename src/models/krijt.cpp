@@ -2,21 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string_view>
 #include <numbers>
 #include <optional>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
-#include <boost/math/tools/roots.hpp>
 #include <fmt/format.h>
 
+#include "bounce/contact/hertz.hpp"
 #include "bounce/contact/independent.hpp"
 #include "bounce/contact/jkr.hpp"
 #include "bounce/models/contact_law.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/pair/mixing.hpp"
 #include "bounce/models/crack.hpp"
 #include "factories.hpp"
+#include "adhesive_contact_law.hpp"
+#include "adhesive_geometries.hpp"
+#include "crack_step.hpp"
 #include "hertz_type.hpp"
 
 namespace bounce::models {
@@ -60,198 +63,26 @@ double contact_energy(const KrijtParameters& p, double a, double delta) {  // K1
 }
 
 double krijt_hysteresis_estimate(const KrijtParameters& p, double speed) {
-  const double rho = 4.0 / 3.0 * p.effective_modulus * std::sqrt(p.effective_radius);  // BP04 (8.24)
-  const double xi0 = std::pow(1.25 * p.effective_mass * speed * speed / rho, 0.4);    // BP04 (8.65)
+  const double rho = hertz_constant(p.effective_modulus, p.effective_radius);  // BP04 (8.24)
+  const double xi0 = contact::hertz::reference_overlap(rho, p.effective_mass, speed);
   const double a_eq = std::cbrt(9.0 * pi * p.surface_energy * p.effective_radius * p.effective_radius /
                                 (2.0 * p.effective_modulus));                         // K13 (10)
   const double a = std::max(std::sqrt(p.effective_radius * xi0), a_eq);
-  const double t_c = 2.943275184 * std::pow(1.25 * p.effective_mass / rho, 0.4) * std::pow(speed, -0.2);
+  const double t_c = contact::hertz::collision_time(rho, p.effective_mass, speed);
   const double phi = a / (p.crack_speed_scale() * t_c);
   const double energy = 0.5 * p.effective_mass * speed * speed;
   return 2.0 * pi * a * a * p.surface_energy / energy * std::pow(phi / 0.39, 1.0 / 1.14);
 }
 
-namespace {
-
-// What a crack step needs of K13 (14)-(16) at one contact (a DEM law keeps the parts that do not
-// depend on R, so that a step divides no more than it must).
-struct CrackConstants {
-  double radius = 0.0;         // R
-  double scale_over_r2 = 0.0;  // 2 pi gamma / E*
-  double scale = 0.0;          // 2 pi R^2 gamma / E*: beta = (a^2 - delta R)^2 / (scale a), K13 (14)
-  double speed = 0.0;          // c of K13 (16)
-  double k = 0.0;
-
-  explicit CrackConstants(const KrijtParameters& p)
-      : scale_over_r2(2.0 * pi * p.surface_energy / p.effective_modulus), speed(p.crack_speed_scale()), k(p.k) {
-    *this = at(p.effective_radius);
-  }
-  // The same at another R, without a division.
-  CrackConstants at(double r) const {
-    CrackConstants c = *this;
-    c.radius = r;
-    c.scale = scale_over_r2 * r * r;
-    return c;
-  }
-};
-
-// The implicit crack step a - base = h c f(beta(a, delta)) (backward Euler: base = a_old, h = dt;
-// BDF2: base = (4 a_old - a_older) / 3, h = 2 dt / 3), taking the root connected to a_old; f is
-// speed(beta), crack_speed_function or the DEM's CrackSpeedTable.
-template <class Speed>
-CrackStep implicit_crack_step(const CrackConstants& p, double a_old, double base, double delta, double h,
-                              double guess, const Speed& speed) {
-  const double c = p.speed, top = (1.0 - krijt_break_margin) / p.k, bottom = p.k * (1.0 + 1e-12);
-  const double scale = p.scale, delta_r = delta * p.radius;
-  // K13 (14) squares a^2 - delta R, the stress intensity at the contact's edge; where it is
-  // negative (a^2 < delta R: a contact smaller than Hertz's at this overlap, as a DEM's first step
-  // can make it) the edge is compressed and closes as fast as the crack law allows (beta -> k),
-  // not at the run-away that beta's square would mean.
-  auto beta = [&](double a) {
-    const double w = a * a - delta_r;
-    return w <= 0.0 ? 0.0 : w * w / (scale * a);
-  };
-  auto residual = [&](double a) {
-    return a - base - h * c * speed(std::clamp(beta(a), bottom, top)).value;
-  };
-  // Newton from `guess` (a_old extrapolated): a DEM step moves a by a few per cent, and one or
-  // two iterations land on the root. It is taken where the residual increases at every iterate
-  // (beta and f' of opposite signs) and beta stays inside (k, 1/k); from a_old, when the root
-  // lies on the side of a_old the residual's sign there points to (the connected root, as the
-  // search below finds it), and from another guess when it is within 25 % of a_old. It stops at
-  // a step below 1e-4 a (Newton's next error, ~(1e-4)^2 a where the root is simple): from the
-  // quadratic predictor that is mostly the first iterate, one crack-law evaluation a step, and
-  // against stopping at 1e-9 a it moves the COR of a DEM collision by < 1e-7 (measured at
-  // T_vis = 1e-14, 1e-12, 1e-11 s; its error is ~1e-4).
-  // A neck that runs away is on the other branch, delta < 0 and a^2 < -delta R / 3, where beta
-  // rises as a falls: the residual's slope is below 1 there. Where f is concave in beta
-  // (crack_speed_concave: f' < 0, f'' <= 0) the residual a - base - h c f(beta(a)) is convex in a
-  // on both branches, since beta is (beta'' = (6a + 2 (delta R)^2 / a^3) / scale > 0): Newton
-  // from a_old, where the residual and its slope are positive, then descends to the connected
-  // root without passing it. Such iterates are taken from a_old while beta, at every iterate and
-  // at the branches' meeting point a^2 = -delta R / 3 where a step passes it (beta's least
-  // value), stays where f is concave. Where Newton from the guess fails (it meets that branch,
-  // say) Newton from a_old is tried; where that fails too, and where the neck breaks in the step
-  // (no root), the search below decides.
-  const double hc = h * c;
-  const double meeting = delta_r < 0.0 ? std::sqrt(-delta_r / 3.0) : 0.0;  // the branches' meeting point
-  auto concave = [&](double b) { return crack_speed_concave(b, p.k); };
-  auto newton = [&](bool from_old) -> std::optional<double> {
-    // beta = w^2 / (scale a), w = a^2 - delta R (K13 (14)); d beta / da = (4 a^2 w - w^2) / (scale a^2).
-    double a = from_old ? a_old : guess, residual_old = 0.0;
-    bool descending = from_old;  // from a_old, every iterate so far with positive residual and f concave
-    for (int i = 0; i < 16; i++) {
-      const double w = a * a - delta_r, w_over_a = w / (scale * a);
-      const double b = w * w_over_a;
-      if (!(w > 0.0 && b > bottom && b * p.k < 1.0 - krijt_break_margin)) return std::nullopt;  // b < top
-      const double db = 4.0 * a * w_over_a - w_over_a * w_over_a * scale;
-      const CrackSpeed f = speed(b);
-      const double slope = 1.0 - hc * f.derivative * db, r = a - base - hc * f.value;
-      descending = descending && r > 0.0 && concave(b);
-      if (!(slope >= 1.0) && !(descending && slope > 0.0)) return std::nullopt;
-      const double step = r / slope;
-      if (i == 0) residual_old = r;
-      if (descending && a > meeting && a - step <= meeting && !concave(beta(meeting))) return std::nullopt;
-      a -= step;
-      if (!(a > 0.0)) return std::nullopt;
-      if (std::abs(step) <= 1e-4 * a) {
-        const bool connected = from_old ? (residual_old <= 0.0) == (a >= a_old) : std::abs(a - a_old) <= 0.25 * a_old;
-        return connected ? std::optional<double>(a) : std::nullopt;
-      }
-    }
-    return std::nullopt;
-  };
-  const bool from_guess = guess > 0.0 && guess != a_old && std::abs(guess - a_old) < 0.1 * a_old;
-  if (const auto root = from_guess ? newton(false) : std::nullopt) return {*root, false};
-  if (const auto root = newton(true)) return {*root, false};
-
-  const auto tolerance = boost::math::tools::eps_tolerance<double>(50);
-  const auto bracket = [&](const auto& fn, double lo, double hi) {  // a root of fn bracketed by [lo, hi], narrowed
-    std::uintmax_t limit = 200;
-    return boost::math::tools::toms748_solve(fn, lo, hi, tolerance, limit);
-  };
-  const auto solve = [&](double lo, double hi) {  // a root of the residual bracketed by [lo, hi]
-    const auto [x0, x1] = bracket(residual, lo, hi);
-    return CrackStep{0.5 * (x0 + x1), false};
-  };
-  if (residual(a_old) <= 0.0) {  // the contact grows: the residual increases above a_old
-    double hi = 2.0 * a_old;
-    while (residual(hi) <= 0.0) hi *= 2.0;
-    return solve(a_old, hi);
-  }
-  // It shrinks: the root is the largest a below a_old where the residual is <= 0, with beta < 1/k
-  // on the way (where beta >= 1/k the crack would open at a speed without bound; K13's run-away
-  // is beta >= 1/k rising as a falls, where nothing below can hold the neck). f never increases
-  // with beta (tested on a dense grid for k from 1e-9 to 0.99: CrackLaw.NeverIncreasesWithBeta),
-  // so on the branch where beta rises with a (a > the meeting point; every a > 0 where delta >= 0)
-  // the residual rises with a: one root at most there, found from a sign change.
-  auto over_top = [&](double a) { return beta(a) - top; };
-  if (delta_r < 0.0 && over_top(meeting) >= 0.0) return {0.0, true};  // beta >= 1/k at its least
-  if (a_old > meeting && residual(meeting) <= 0.0) {
-    // A root where beta >= 1/k is none: the crack runs at a speed without bound there (the
-    // residual's f is clamped at (1 - 1e-6)/k), so the neck shrinks to where beta = 1/k, or below.
-    double upper = a_old;
-    if (over_top(a_old) >= 0.0) {
-      upper = bracket(over_top, meeting, a_old).first;  // beta < top
-      if (residual(upper) <= 0.0) return {upper, false};
-    }
-    return solve(meeting, upper);
-  }
-  if (!(delta_r < 0.0)) return {0.0, true};  // r(0) = -base - h c f(~k) < 0 (f -> +inf at k): not met
-  // Below the meeting point beta rises as a falls, to 1/k at a_break, and the residual can dip
-  // below zero and come back (beta's rise against a's fall). But it falls no faster than a:
-  // r(a - d) >= r(a) - d, since its term -h c f(beta(a)) only grows as a falls (beta rises, f
-  // never increases). So no root lies within r(a) below a point a. The walk down from a_top
-  // steps by r(a) where that is at least 1/32 of [a_break, a_top], and by that 1/32 otherwise,
-  // solving for a sign change where one appears. The first root from the top is the connected
-  // one; with none the neck breaks (K13's run-away). A dip narrower than the 1/32 that falls
-  // between two of the walk's points is not seen: none was in 8163 states of a test grid and
-  // 94 896 of a denser one, against scans in steps of 1e-4 a_old and 1e-5 a_old.
-  const double a_top = std::min(a_old, meeting);
-  if (over_top(a_top) >= 0.0) return {0.0, true};
-  double a_low = 0.5 * a_top;
-  while (over_top(a_low) < 0.0) a_low *= 0.5;  // beta ~ (delta R)^2 / (scale a) as a -> 0
-  // The least a with beta < 1/k (the bracket's upper end).
-  const double a_break = bracket(over_top, a_low, a_top).second;
-  // (At least a few ulps, so that every pass moves a.)
-  const double spacing = std::max((a_top - a_break) / 32.0, 4.0 * std::numeric_limits<double>::epsilon() * a_top);
-  double a = a_top, r = residual(a_top);  // r > 0 at a_top (a_old, or the meeting point)
-  while (a - r > a_break) {
-    if (r >= spacing) {
-      a -= r;  // r(a) >= 0 there: zero, a root, or positive
-      r = residual(a);
-      if (r <= 0.0) return {a, false};
-      continue;
-    }
-    const double next = std::max(a - spacing, a_break), r_next = residual(next);
-    if (r_next <= 0.0) return solve(next, a);  // two roots within one 1/32: the one toms748 meets
-    a = next;
-    r = r_next;
-  }
-  return {0.0, true};
-}
-
-// BDF2 with variable steps: the base and the step h of implicit_crack_step.
-template <class Speed>
-CrackStep bdf2_crack_step(const CrackConstants& p, double a_old, double delta, double dt, double a_older, double ratio,
-                          double guess, const Speed& speed) {
-  const double w = ratio, inverse_d = 1.0 / (1.0 + 2.0 * w);
-  const double base = ((1.0 + w) * (1.0 + w) * a_old - w * w * a_older) * inverse_d;
-  return implicit_crack_step(p, a_old, base, delta, (1.0 + w) * inverse_d * dt,
-                             guess > 0.0 ? guess : a_old + w * (a_old - a_older), speed);
-}
-
-}  // namespace
-
 CrackStep krijt_crack_step(const KrijtParameters& p, double a_old, double delta, double dt) {  // K13 (14)-(17)
-  return implicit_crack_step(CrackConstants(p), a_old, a_old, delta, dt, a_old,
-                             [&](double b) { return crack_speed_function(b, p.k); });
+  return detail::implicit_crack_step(detail::CrackConstants(p), a_old, delta, dt, a_old,
+                                     [&](double b) { return crack_speed_function(b, p.k); });
 }
 
 CrackStep krijt_crack_step(const KrijtParameters& p, double a_old, double delta, double dt, double a_older,
                            double ratio, double guess) {  // K13 (14)-(17) by variable-step BDF2
-  return bdf2_crack_step(CrackConstants(p), a_old, delta, dt, a_older, ratio, guess,
-                         [&](double b) { return crack_speed_function(b, p.k); });
+  return detail::bdf2_crack_step(detail::CrackConstants(p), a_old, delta, dt, a_older, ratio, guess,
+                                 [&](double b) { return crack_speed_function(b, p.k); });
 }
 
 namespace {
@@ -297,68 +128,6 @@ double krijt_release_overlap(const KrijtParameters& p) {  // K13 (14) at its lea
 
 namespace {
 
-// K13's parameters for the pair: gamma of the pair, T_vis, A (given, or T_vis / nu^2 by
-// K13 after (18)), z0 and k. krijt needs T_vis (its crack law); jkr-viscoelastic A or T_vis.
-KrijtParameters k13_parameters(const Pair& pair, const Parameters& p, std::string_view name, bool needs_tvis) {
-  KrijtParameters k;
-  k.effective_radius = pair.effective_radius();
-  k.effective_modulus = pair.effective_modulus();
-  k.effective_mass = pair.effective_mass();
-  k.surface_energy = detail::adhesive_surface_energy(pair, name);
-  if (p.given("tvis")) {
-    k.relaxation_time = *p.real("tvis");
-  } else if (needs_tvis || !p.given("A")) {
-    throw InvalidArgument("tvis", "(not given)", fmt::format("a viscous relaxation time T_vis > 0 s (model {})", name));
-  }
-  k.dissipative_constant = p.given("A") ? *p.real("A") : krijt_dissipative_constant(k.relaxation_time, pair);
-  k.z0 = *p.real("z0");
-  if (needs_tvis) k.k = *p.real("k");
-  return k;
-}
-
-// The slots of a model with K13's parameters.
-Model contact_model(const KrijtParameters& k, const Parameters& p, NormalInteraction normal) {
-  Model m;
-  m.normal = std::move(normal);
-  m.dissipative_constant = k.dissipative_constant;
-  m.viscous_time = p.given("tvis") ? k.relaxation_time : k.dissipative_constant;
-  m.z0 = k.z0;
-  return m;
-}
-
-// jkr-viscoelastic per DEM contact: K13 (2) + (19) with a on the JKR branch a(delta) of K13 (8)
-// for the contact's R_eff; it holds down to the fold delta_c or the pull-off point.
-class JkrViscoelasticContact final : public ContactLaw {
- public:
-  JkrViscoelasticContact(const KrijtParameters& p, bool pull_off) : p_(p), pull_off_(pull_off) {}
-  double force(const ContactGeometry& g, double delta, double rate) const override {
-    const KrijtParameters p = at(g);
-    const double a = contact::jkr::DisplacementBranch(jkr(p)).radius(delta);
-    return elastic_force(p, a, delta) + bulk_dissipative_force(p, a, rate);
-  }
-  double energy(const ContactGeometry& g, double delta) const override {
-    const KrijtParameters p = at(g);
-    return contact_energy(p, contact::jkr::DisplacementBranch(jkr(p)).radius(delta), delta);
-  }
-  double release_overlap(const ContactGeometry& g) const override {
-    const contact::jkr::Parameters j = jkr(at(g));
-    return pull_off_ ? contact::jkr::pull_off_overlap(j) : contact::jkr::separation_overlap(j);
-  }
-
- private:
-  KrijtParameters at(const ContactGeometry& g) const {
-    KrijtParameters p = p_;
-    p.effective_radius = g.effective_radius;
-    p.effective_mass = g.effective_mass;
-    return p;
-  }
-  static contact::jkr::Parameters jkr(const KrijtParameters& p) {
-    return {p.effective_radius, p.effective_modulus, p.surface_energy};
-  }
-  KrijtParameters p_;
-  bool pull_off_;
-};
-
 // krijt per DEM contact: K13 (2) + (19) with the contact radius a of the contact's state,
 // moved each step by krijt_crack_step; the contact forms as K13 appendix B has it and ends at
 // K13's run-away.
@@ -374,7 +143,7 @@ class KrijtContact final : public CrackContactLaw {
   }
   CrackAdvance advance(const ContactGeometry& g, double before, double delta, double dt, CrackState& s,
                        Refinement refine) const override {
-    const CrackConstants p = constants_.at(g.effective_radius);
+    const detail::CrackConstants p = constants_.at(g.effective_radius);
     CrackState one = s;
     const CrackAdvance whole = step(p, before, delta, dt, one);
     if (refine == Refinement::none) {
@@ -443,15 +212,15 @@ class KrijtContact final : public CrackContactLaw {
   // One crack step: BDF2 where the step before is known and of about the same length; backward
   // Euler otherwise (the first step, or the doubling stretches of a forming contact, where BDF2
   // left a 0.6 % too large against 0.08 % for backward Euler).
-  CrackAdvance step(const CrackConstants& p, double before, double delta, double dt, CrackState& s) const {
+  CrackAdvance step(const detail::CrackConstants& p, double before, double delta, double dt, CrackState& s) const {
     const double ratio = s.previous_step > 0.0 ? dt / s.previous_step : 0.0;
     const bool uniform = ratio > 0.9 && ratio < 1.1;
     // Newton's first guess: the quadratic predictor (its error, O(dt^3), ~1e-6 a, lets one
     // iteration land), else BDF2's line.
     const double guess = predictor(s, dt).value_or(0.0);
     const CrackStep step =
-        uniform ? bdf2_crack_step(p, s.contact_radius, delta, dt, s.previous_radius, ratio, guess, speed_)
-                : implicit_crack_step(p, s.contact_radius, s.contact_radius, delta, dt, s.contact_radius, speed_);
+        uniform ? detail::bdf2_crack_step(p, s.contact_radius, delta, dt, s.previous_radius, ratio, guess, speed_)
+                : detail::implicit_crack_step(p, s.contact_radius, delta, dt, s.contact_radius, speed_);
     const double a_old = s.contact_radius, a_new = step.broken ? 0.0 : step.contact_radius;
     s.older_radius = dt == s.previous_step ? s.previous_radius : 0.0;  // for the predictor
     s.previous_radius = a_old;
@@ -476,29 +245,34 @@ class KrijtContact final : public CrackContactLaw {
     return p;
   }
   KrijtParameters p_;
-  CrackConstants constants_;  // at p_'s R; those of a contact at its own
+  detail::CrackConstants constants_;  // at p_'s R; those of a contact at its own
   CrackSpeedTable speed_;     // K13 (16)/(17) at p_.k
 };
 
 }  // namespace
 
-std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const Parameters& p) {
-  return std::make_shared<KrijtContact>(k13_parameters(pair, p, "krijt", true));
+std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const CrackModelParameters& p, const Context&) {
+  return std::make_shared<KrijtContact>(detail::contact_parameters(pair, p, "krijt", p.k));
 }
 
-Model make_krijt(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = k13_parameters(pair, p, "krijt", true);
-  return contact_model(k, p, CrackContact{k});
+Model make_krijt(const Pair& pair, const CrackModelParameters& p, const Context&) {
+  const KrijtParameters k = detail::contact_parameters(pair, p, "krijt", p.k);
+  return detail::contact_model(k, p, CrackContact{k});
 }
 
-std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const Parameters& p) {
-  return std::make_shared<JkrViscoelasticContact>(k13_parameters(pair, p, "jkr-viscoelastic", false),
-                                                  parse_end_rule(p.text("contact_end")) == EndRule::pull_off);
+// jkr-viscoelastic per DEM contact: JKR's branch at the contact's R_eff (a few constants: made at
+// every call), which holds down to the fold delta_c or the pull-off point.
+std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const ContactModelParameters& p,
+                                                           const Context& c) {
+  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic");
+  const auto at = [e = k.effective_modulus, gamma = k.surface_energy](double r) { return detail::JkrGeometry(r, e, gamma); };
+  return detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant,
+                                         detail::adhesive_release(c.end_rule));
 }
 
-Model make_jkr_viscoelastic(const Pair& pair, const Parameters& p) {
-  const KrijtParameters k = k13_parameters(pair, p, "jkr-viscoelastic", false);
-  return contact_model(k, p, AdhesiveContact{k, jkr_geometry(k.effective_radius, k.effective_modulus, k.surface_energy)});
+Model make_jkr_viscoelastic(const Pair& pair, const ContactModelParameters& p, const Context&) {
+  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic");
+  return detail::contact_model(k, p, AdhesiveContact{k, jkr_geometry(k.effective_radius, k.effective_modulus, k.surface_energy)});
 }
 
 }  // namespace bounce::models

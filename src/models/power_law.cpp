@@ -59,20 +59,10 @@ class PowerLawContact final : public ContactLaw {
   PowerLawParameters p_;
 };
 
-PowerLawParameters power_law_parameters(const Parameters& p) {
-  PowerLawParameters law;
-  law.d1 = p.require_real("power_d1", "D1 > 0 for the power-law model");
-  law.d2 = p.require_real("power_d2", "D2 >= 0 for the power-law model");
-  law.alpha = *p.real("power_alpha");
-  law.beta = *p.real("power_beta");
-  law.gamma = *p.real("power_gamma");
-  return law;
-}
-
 }  // namespace
 
-std::shared_ptr<const ContactLaw> power_law_contact(const Pair&, const Parameters& p) {
-  return std::make_shared<PowerLawContact>(power_law_parameters(p));
+std::shared_ptr<const ContactLaw> power_law_contact(const Pair&, const PowerLawParameters& p, const Context&) {
+  return std::make_shared<PowerLawContact>(p);
 }
 
 std::unique_ptr<NormalForceModel> make_power_law_force(const PowerLawParameters& parameters, double effective_mass,
@@ -80,10 +70,9 @@ std::unique_ptr<NormalForceModel> make_power_law_force(const PowerLawParameters&
   return std::make_unique<PowerLawForce>(parameters, effective_mass, equivalent_radius);
 }
 
-Model make_power_law(const Pair& pair, const Parameters& p) {
-  const PowerLawParameters law = power_law_parameters(p);
+Model make_power_law(const Pair& pair, const PowerLawParameters& p, const Context&) {
   Model m;
-  m.normal = ForceLaw{make_power_law_force(law, pair.effective_mass(), pair.effective_radius())};
+  m.normal = ForceLaw{make_power_law_force(p, pair.effective_mass(), pair.effective_radius())};
   return m;
 }
 

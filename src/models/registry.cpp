@@ -21,10 +21,6 @@ namespace {
 
 using namespace catalogue;
 
-// The checked-in table: one row per model (keyword, summary, references, capabilities, own
-// parameters, factory). To add a model, write src/models/<model>.cpp with its factory
-// (declared in factories.hpp) and add its row here: the CLI, Python and docs/models.md
-// take it from this table.
 // The end rules of the force laws, and of the adhesive models that end where they break.
 Traits force_law(bool master_curve, Adhesion adhesion = Adhesion::negligible) {
   Traits t;
@@ -92,32 +88,47 @@ Traits krijt_traits() {
   return t;
 }
 
+// No pull-off end: toward DMT the least force lies at touching, inside the attraction's range,
+// past the snap-on; a release there would hand the pair the zone's energy (e > 1).
+Traits maugis_viscoelastic_traits() {
+  return adhesive(Engine::adhesive, Adhesion::maugis, {EndRule::overlap, EndRule::fold},
+                  "overlap or fold (the Maugis jump-off; no pull-off: toward DMT the least force lies inside the "
+                  "attraction's range)");
+}
+
 // The checked-in table: one row per model (keyword, summary, references, traits, own
 // parameters, factory, what fit fits, DEM laws). To add a model, write src/models/<model>.cpp
 // with its factory (declared in factories.hpp) and add its row here: the CLI, Python and
 // docs/models.md take it from this table.
 std::vector<ModelRow> builtin_rows() {
   return {
-      {"hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)", hertz_traits(), {}, &make_hertz,
-       {"yield"}, &hertz_contact},
-      {"viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'", "BP04 (8.42), BSHP96 (24)",
-       viscoelastic_traits(), {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()},
-       &make_viscoelastic, {"A"}, &viscoelastic_contact},
-      {"viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero", "BSHP96 (25)",
-       shifted_traits(), {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time()},
-       &make_viscoelastic_shifted, {"A"}, &viscoelastic_shifted_contact},
-      {"power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)", force_law(false, Adhesion::unchecked),
-       {power_d1(), power_alpha(), power_d2(), power_beta(), power_gamma()}, &make_power_law, {}, &power_law_contact},
-      {"adhesive-viscoelastic", "BP04's quasi-static adhesive force (8.56) with its dissipation (8.57)",
-       "BP04 (8.56)-(8.58), docs/adhesive.md", adhesive_viscoelastic_traits(),
-       {dissipative_constant(), shear_viscosity(), bulk_viscosity(), relaxation_time(), dissipative_constant_b(), z0()},
-       &make_adhesive_viscoelastic, {"gamma", "tvis", "yield"}, &adhesive_viscoelastic_contact},
-      {"jkr-viscoelastic", "contact radius on the JKR equilibrium (instantaneous crack) plus the bulk force",
-       "K13 (8), (9), (19), (20)", jkr_viscoelastic_traits(), {relaxation_time(), dissipative_constant(), z0()},
-       &make_jkr_viscoelastic, {"gamma", "tvis", "yield"}, &jkr_viscoelastic_contact},
-      {"krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
-       "K13 (2), (14)-(21), appendices B, C", krijt_traits(), {relaxation_time(), dissipative_constant(), krijt_z0(), k()},
-       &make_krijt, {"gamma", "tvis", "yield"}, {}, &krijt_crack_law},
+      model_row("hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)", hertz_traits(), no_fields(),
+                TypedFactories<NoParameters>{&make_hertz, &hertz_contact}, {"yield"}),
+      model_row("viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'",
+                "BP04 (8.42), BSHP96 (24)", viscoelastic_traits(), viscous_fields(),
+                TypedFactories<ViscousParameters>{&make_viscoelastic, &viscoelastic_contact}, {"A"}),
+      model_row("viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero", "BSHP96 (25)",
+                shifted_traits(), viscous_fields(),
+                TypedFactories<ViscousParameters>{&make_viscoelastic_shifted, &viscoelastic_shifted_contact}, {"A"}),
+      model_row("power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)",
+                force_law(false, Adhesion::unchecked), power_law_fields(),
+                TypedFactories<PowerLawParameters>{&make_power_law, &power_law_contact}),
+      model_row("adhesive-viscoelastic", "BP04's quasi-static adhesive force (8.56) with its dissipation (8.57)",
+                "BP04 (8.56)-(8.58), docs/adhesive.md", adhesive_viscoelastic_traits(), adhesive_viscous_fields(),
+                TypedFactories<AdhesiveViscousParameters>{&make_adhesive_viscoelastic, &adhesive_viscoelastic_contact},
+                {"gamma", "tvis", "yield"}),
+      model_row("jkr-viscoelastic", "contact radius on the JKR equilibrium (instantaneous crack) plus the bulk force",
+                "K13 (8), (9), (19), (20)", jkr_viscoelastic_traits(), contact_fields(),
+                TypedFactories<ContactModelParameters>{&make_jkr_viscoelastic, &jkr_viscoelastic_contact},
+                {"gamma", "tvis", "yield"}),
+      model_row("krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
+                "K13 (2), (14)-(21), appendices B, C", krijt_traits(), crack_fields(),
+                TypedFactories<CrackModelParameters>{&make_krijt, {}, &krijt_crack_law}, {"gamma", "tvis", "yield"}),
+      model_row("maugis-viscoelastic", "contact on the Maugis-Dugdale branch (any Tabor parameter) plus the bulk force",
+                "Maugis 1992 (MD1)-(MD3), K13 (19), (20), docs/adhesive.md", maugis_viscoelastic_traits(),
+                contact_fields(),
+                TypedFactories<ContactModelParameters>{&make_maugis_viscoelastic, &maugis_viscoelastic_contact},
+                {"gamma", "tvis", "yield"}),
   };
 }
 
@@ -125,8 +136,8 @@ std::vector<ModelRow> builtin_rows() {
 std::vector<ParameterSpec> every_model() {
   return {
       choice_parameter("contact_end", {"overlap", "force", "fold", "pull-off"},
-                       "overlap | force | fold | pull-off: when the contact ends (default overlap; fold and pull-off: "
-                       "jkr-viscoelastic)"),
+                       "overlap | force | fold | pull-off: when the contact ends (default overlap; the rules each "
+                       "model takes: bounce models)"),
       // K13 Fig 7 finds Y / E_soft from 1e-3 to the theoretical 0.2; at 1 no collision yields.
       fittable(real_parameter("yield", "yield strength Y", "Pa", positive(),
                               "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
@@ -248,15 +259,29 @@ Parameters bind_model_parameters(std::string_view name, const ParameterInputs& i
   return bind_parameters(row.parameters, inputs, fmt::format("model {}", row.name));
 }
 
+namespace {
+
+// What every factory gets beside its model's own parameters: the end rule it declares and, for a
+// model that takes convex bodies, their curvatures where given.
+ModelContext context(const ModelRow& row, const Pair& pair, const Parameters& p) {
+  ModelContext c;
+  c.end_rule = checked_end_rule(row, p.text("contact_end"));
+  if (row.traits.convex) c.shape = contact::convex::curvatures_from(p, pair.body2().is_wall());
+  return c;
+}
+
+}  // namespace
+
 Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
   const ModelRow& row = model_registry().at(name);
-  Model m = row.factory(pair, p);
+  const ModelContext c = context(row, pair, p);
+  Model m = row.factory(pair, p, c);
   if (engine_of(m.normal) != row.traits.engine) {
     throw std::logic_error("model " + row.name + ": its factory made another kind of normal interaction than it declares");
   }
   m.name = row.name;
   m.traits = row.traits;
-  m.end_rule = checked_end_rule(row, p.text("contact_end"));
+  m.end_rule = c.end_rule;
   m.yield_strength = p.real("yield");
   m.tangential = tangential_model(pair, p);
   return m;
@@ -271,11 +296,12 @@ DemModel make_contact_law(const Pair& pair, std::string_view name, const Paramet
     }
     throw InvalidArgument("model", row.name, fmt::format("a model with a DEM contact law: {}", fmt::join(with, ", ")));
   }
+  const ModelContext c = context(row, pair, p);
   DemModel m;
   m.name = row.name;
-  m.end_rule = checked_end_rule(row, p.text("contact_end"));
-  if (row.contact_law) m.normal = row.contact_law(pair, p);
-  if (row.crack_law) m.crack = row.crack_law(pair, p);
+  m.end_rule = c.end_rule;
+  if (row.contact_law) m.normal = row.contact_law(pair, p, c);
+  if (row.crack_law) m.crack = row.crack_law(pair, p, c);
   m.tangential = tangential_model(pair, p);
   return m;
 }

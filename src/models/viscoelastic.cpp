@@ -34,9 +34,9 @@ class ViscoelasticForce final : public detail::HertzTypeForce {
   std::string name_;
 };
 
-Model hertz_type(const Pair& pair, const Parameters& p, double a, std::string_view name) {
+Model hertz_type(const Pair& pair, const Context& c, double a, std::string_view name) {
   Model m;
-  const HertzGeometry geometry = detail::hertz_geometry(pair, detail::curvatures(pair, p));
+  const HertzGeometry geometry = detail::hertz_geometry(pair, c.shape);
   m.normal = ForceLaw{make_viscoelastic_force(geometry, a, name)};
   m.hertz = HertzScaling{geometry.force_constant, a};
   return m;
@@ -49,20 +49,20 @@ std::unique_ptr<NormalForceModel> make_viscoelastic_force(const HertzGeometry& g
   return std::make_unique<ViscoelasticForce>(geometry, dissipative_constant, name);
 }
 
-Model make_hertz(const Pair& pair, const Parameters& p) { return hertz_type(pair, p, 0.0, "hertz"); }
+Model make_hertz(const Pair& pair, const NoParameters&, const Context& c) { return hertz_type(pair, c, 0.0, "hertz"); }
 
-std::shared_ptr<const ContactLaw> hertz_contact(const Pair& pair, const Parameters&) {
+std::shared_ptr<const ContactLaw> hertz_contact(const Pair& pair, const NoParameters&, const Context&) {
   return std::make_shared<detail::HertzTypeContact<viscoelastic_force>>(pair.effective_modulus(), 0.0);
 }
 
-std::shared_ptr<const ContactLaw> viscoelastic_contact(const Pair& pair, const Parameters& p) {
+std::shared_ptr<const ContactLaw> viscoelastic_contact(const Pair& pair, const ViscousParameters& p, const Context&) {
   return std::make_shared<detail::HertzTypeContact<viscoelastic_force>>(
       pair.effective_modulus(), detail::dissipative_constant(pair, p, "viscoelastic"));
 }
 
-Model make_viscoelastic(const Pair& pair, const Parameters& p) {
+Model make_viscoelastic(const Pair& pair, const ViscousParameters& p, const Context& c) {
   const double a = detail::dissipative_constant(pair, p, "viscoelastic");
-  Model m = hertz_type(pair, p, a, "viscoelastic");
+  Model m = hertz_type(pair, c, a, "viscoelastic");
   m.dissipative_constant = a;
   m.viscous_time = detail::viscous_time(pair, p, a);
   return m;

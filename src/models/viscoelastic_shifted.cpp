@@ -33,7 +33,8 @@ class ShiftedViscoelasticForce final : public detail::HertzTypeForce {
 
 }  // namespace
 
-std::shared_ptr<const ContactLaw> viscoelastic_shifted_contact(const Pair& pair, const Parameters& p) {
+std::shared_ptr<const ContactLaw> viscoelastic_shifted_contact(const Pair& pair, const ViscousParameters& p,
+                                                               const Context&) {
   return std::make_shared<detail::HertzTypeContact<shifted_force>>(
       pair.effective_modulus(), detail::dissipative_constant(pair, p, "viscoelastic-shifted"));
 }
@@ -43,9 +44,9 @@ std::unique_ptr<NormalForceModel> make_shifted_viscoelastic_force(const HertzGeo
   return std::make_unique<ShiftedViscoelasticForce>(geometry, dissipative_constant);
 }
 
-Model make_viscoelastic_shifted(const Pair& pair, const Parameters& p) {
+Model make_viscoelastic_shifted(const Pair& pair, const ViscousParameters& p, const Context& c) {
   const double a = detail::dissipative_constant(pair, p, "viscoelastic-shifted");
-  const HertzGeometry geometry = detail::hertz_geometry(pair, detail::curvatures(pair, p));
+  const HertzGeometry geometry = detail::hertz_geometry(pair, c.shape);
   Model m;
   m.normal = ForceLaw{make_shifted_viscoelastic_force(geometry, a)};
   m.hertz = HertzScaling{geometry.force_constant, a};

@@ -11,6 +11,7 @@ import tempfile
 LMP = os.environ.get("BOUNCE_LMP", "")
 PLUGIN = os.environ.get("BOUNCE_PLUGIN", "")
 CLI = os.environ.get("BOUNCE_CLI", "")
+last_output = ""  # head_on's last LAMMPS output
 
 
 def bounce(*args):
@@ -105,6 +106,11 @@ def printed(output, name):
     return float(match[-1])
 
 
+# One atom's spin as a global value: `variable w equal c_spin[1]` on a per-atom compute stops LAMMPS
+# 20250204 ("Mismatched compute in variable formula"); a sum over a group of that one atom works
+# on every release.
+
+
 def preamble(box, types):
     """An SI sphere system in a fixed cube of half-side `box` with `types` atom types, atoms
     addressable by id (x[1], vx[2] in variables)."""
@@ -120,11 +126,12 @@ create_box {types} box
 
 
 def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", coeff=None, radius2=None,
-            tangential_velocity=0.0):
+            tangential_velocity=0.0, gap=0.0, coeff_lines=None):
     """A two-sphere collision in LAMMPS: `pair` holds the bodies (material[, material2],
     radius[, radius2]) as for `bounce collide`, `model` the model's options. The spheres touch
-    at t = 0 with relative normal speed `velocity` (and tangential `tangential_velocity`) in
-    their centre-of-mass frame; dt = t_c / steps_per_contact with bounce's contact time.
+    at t = 0 (or are `gap` apart: a contact that forms before touching) with relative normal
+    speed `velocity` (and tangential `tangential_velocity`) in their centre-of-mass frame;
+    dt = t_c / steps_per_contact with bounce's contact time.
     Returns (eps^N from LAMMPS, eps^T from LAMMPS, bounce's record)."""
     options = dict(pair, **model)
     extra = ["--tangential-velocity", str(tangential_velocity)] if tangential_velocity else []
@@ -132,19 +139,22 @@ def head_on(pair, model, velocity, steps_per_contact=1000, pair_style="bounce", 
     b1, b2 = ref["pair"]["body1"], ref["pair"]["body2"]
     r1, r2, m1, m2 = b1["radius"], b2["radius"], b1["mass"], b2["mass"]
     dt = ref["contact_time"] / steps_per_contact
-    steps = int(3 * steps_per_contact)
+    approach = gap / velocity  # the flight before the gap closes
+    steps = int(3 * steps_per_contact + math.ceil(approach / dt))
     box = 4 * (r1 + r2)
     v1, v2 = velocity * m2 / (m1 + m2), -velocity * m1 / (m1 + m2)
     u1, u2 = tangential_velocity * m2 / (m1 + m2), -tangential_velocity * m1 / (m1 + m2)
     materials = {k: v for k, v in pair.items() if not k.startswith("radius")}
-    if coeff is None:
+    if coeff_lines is not None:  # pair_coeff lines as given
+        coeffs = coeff_lines
+    elif coeff is None:
         coeffs = pair_coeffs(materials, model)
     else:
         coeffs = "pair_coeff * * " + coeff.split(" ", 1)[1]
     plugin = f"plugin load {PLUGIN}" if pair_style.startswith("bounce") else ""
     script = preamble(box, 2) + f"""
-create_atoms 1 single {-r1} 0 0
-create_atoms 2 single {r2} 0 0
+create_atoms 1 single {-r1 - 0.5 * gap!r} 0 0
+create_atoms 2 single {r2 + 0.5 * gap!r} 0 0
 set atom 1 diameter {2 * r1} mass {m1}
 set atom 2 diameter {2 * r2} mass {m2}
 velocity all set 0 0 0
@@ -156,20 +166,26 @@ pair_style {pair_style}
 neighbor {max(r1, r2) * 0.1} bin
 timestep {dt!r}
 fix 1 all nve/sphere
+group one id 1
+group two id 2
 compute spin all property/atom omegaz
-variable w1 equal c_spin[1]
-variable w2 equal c_spin[2]
+compute w1 one reduce sum c_spin
+compute w2 two reduce sum c_spin
+variable w1 equal c_w1
+variable w2 equal c_w2
 thermo_style custom step v_w1 v_w2
 thermo {steps}
 run {steps}
 print "STATE $(x[1]:%.17g) $(y[1]:%.17g) $(vx[1]:%.17g) $(vy[1]:%.17g) $(v_w1:%.17g) $(x[2]:%.17g) $(y[2]:%.17g) $(vx[2]:%.17g) $(vy[2]:%.17g) $(v_w2:%.17g)"
 """
     _, output = run_lammps(script)
+    global last_output
+    last_output = output  # what LAMMPS printed (for its warnings)
     x1, y1, vx1, vy1, w1, x2, y2, vx2, vy2, w2 = final_state(output)
     # The frame of the contact as it ended: the line of centres at separation (bounce's contact
     # time; after it the centres fly straight), not the x axis: sliding turns it by about
     # g^T t_c / (R1 + R2), which would otherwise mix g^N into g^T (BSHP96's geometry is fixed).
-    flight = steps * dt - ref["contact_time"]
+    flight = steps * dt - approach - ref["contact_time"]
     dx, dy = (x1 - vx1 * flight) - (x2 - vx2 * flight), (y1 - vy1 * flight) - (y2 - vy2 * flight)
     norm = math.hypot(dx, dy)
     nx, ny = dx / norm, dy / norm  # from 2 to 1 (initially -x)
@@ -249,7 +265,7 @@ def thermo_rows(output):
     """(step, value, ...) rows of the thermo table(s) LAMMPS printed."""
     rows, reading = [], False
     for line in output.splitlines():
-        if line.startswith("Step "):
+        if line.split()[:1] == ["Step"]:  # (LAMMPS 20250204 right-aligns it: "   Step")
             reading = True
             continue
         if reading:
@@ -300,7 +316,8 @@ pair_coeff * * hertz E 1e9 nu 0.3
 fix 1 all nve/sphere
 fix 2 all wall/bounce {wall_args}
 compute spin all property/atom omegay
-variable w equal c_spin[1]
+compute w all reduce sum c_spin
+variable w equal c_w
 thermo_style custom step v_w
 thermo {steps}
 timestep {dt!r}

@@ -32,6 +32,7 @@ CASES = {
     "adhesive-viscoelastic": ({"tvis": 1e-11}, 2.0),
     "jkr-viscoelastic": ({"tvis": 1e-11}, 8.0),
     "krijt": ({"tvis": 1e-11}, 8.0),
+    "maugis-viscoelastic": ({"tvis": 1e-11, "z0": 2e-9}, 4.0),
 }
 PAIR = {"material": "water-ice", "radius": 1e-6}
 

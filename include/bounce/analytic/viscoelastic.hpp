@@ -71,17 +71,14 @@ double cor_pade(double q, const PadeCoefficients& d);
 double c1_constant();
 
 // --- Hertz contact times ---------------------------------------------------------
-/// Exact scaled contact time of the elastic collision, 2 int_0^1 dx / sqrt(1 - x^{5/2})
-/// = (4/5) sqrt(pi) Gamma(2/5) / Gamma(9/10) = 2.943287…
-double hertz_scaled_contact_time();
-/// Exact Hertz contact time t_c = 2.943287 (5m/(4 C0))^{2/5} g^{-1/5} [s].
-double hertz_contact_time(double force_constant, double effective_mass, double speed);
+// The exact Hertz contact time and its constant are contact::hertz::collision_time and
+// scaled_collision_time (2.943275…).
 /// BSHP96 (A13) as printed: 2.94 (m/k)^{2/5} g^{-1/5}, k = (4/5) C0.
 double hertz_contact_time_bshp96(double force_constant, double effective_mass, double speed);
 /// K13 (22) as printed: t_H = 2.87 (m^2 / (R E*^2 v))^{1/5}.
 double hertz_contact_time_k13(double effective_mass, double effective_radius, double effective_modulus,
                               double speed);
-/// The exact constant of K13 (22): 2.943287 (15/16)^{2/5} = 2.8683…
+/// The exact constant of K13 (22): 2.943275 (15/16)^{2/5} = 2.8683…
 double hertz_contact_time_k13_constant();
 
 // --- power-law forces, BP04 (8.63)-(8.69) -----------------------------------------

@@ -84,6 +84,10 @@ Case make_case(std::string_view command, const Inputs& inputs, std::optional<dou
 Pair make_pair(const Inputs& inputs);
 /// The model's inputs checked against its row (Python's Model(...) before it meets a pair).
 Parameters check_model(std::string_view name, const Inputs& inputs);
+/// `e` with its value as the user typed it: a check below the front door formats the number it
+/// checked ("1e+05"); where `e` names an input given as text that reads as that number ("1e5"),
+/// the text. Otherwise `e` itself.
+InvalidArgument as_typed(const InvalidArgument& e, const Inputs& inputs);
 
 // --- the commands: each returns the Record the CLI prints as JSON ----------------------
 Record collide(const Inputs& inputs);

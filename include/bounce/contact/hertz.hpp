@@ -18,4 +18,13 @@ double elastic_energy(double hertz_constant, double overlap);
 /// Central pressure p0 = 3F / (2 pi a^2) (BP04 (8.10) at x = y = 0, a = b).
 double max_pressure(double force, double contact_radius);
 
+// The scales of an elastic collision at impact speed g (every layer takes them from here).
+/// BP04 (8.65): xi0 = (5 m_eff g^2 / (4 rho))^{2/5}, its maximum overlap.
+double reference_overlap(double hertz_constant, double effective_mass, double speed);
+/// Its duration in units of xi0 / g: 2 int_0^1 (1 - x^{5/2})^{-1/2} dx = (4/5) sqrt(pi)
+/// Gamma(2/5) / Gamma(9/10) = 2.943275... (BSHP96 (A13)'s 2.94, K13 (22)'s 2.87 with its own scale).
+double scaled_collision_time();
+/// Its duration t_c = scaled_collision_time() xi0 / g = 2.943275 (5 m_eff / (4 rho))^{2/5} g^{-1/5}.
+double collision_time(double hertz_constant, double effective_mass, double speed);
+
 }  // namespace bounce::contact::hertz

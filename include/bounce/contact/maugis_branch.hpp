@@ -30,6 +30,7 @@
 // potential -w + sigma0 h for h < h0 is linear in sigma0 at fixed fields, and U is stationary in
 // them), by a central difference in lambda.
 
+#include <mutex>
 #include <vector>
 
 namespace bounce::contact::maugis {
@@ -76,6 +77,9 @@ class Branch {
   const BranchPoint& pull_off() const noexcept { return pull_off_; }
   const Place& pull_off_place() const noexcept { return pull_off_place_; }
 
+  /// The overlap of the stable state without force (P = 0: in contact, beyond the pull-off).
+  double zero_force_overlap() const;
+
   /// U: the energy of the state, in pi w l^2 (0 at the curve's start).
   double energy(const Place& place) const;
   double energy_at_overlap(double overlap) const { return energy(place_at_overlap(overlap)); }
@@ -90,7 +94,11 @@ class Branch {
   double snap_overlap_;
   Place fold_place_, pull_off_place_;
   BranchPoint fold_, pull_off_;
-  std::vector<double> work_;  // int from x_i to the top node of -P dDelta/dx, x_i = top - i spacing
+  // int from x_i to the top node of -P dDelta/dx, x_i = top - i spacing: made at the first
+  // energy asked for (a DEM law asks for forces only), once whatever the threads.
+  const std::vector<double>& work() const;
+  mutable std::once_flag work_made_;
+  mutable std::vector<double> work_;
 };
 
 }  // namespace bounce::contact::maugis

@@ -113,6 +113,11 @@ class Parameters {
   /// The flag (false unless given as true).
   bool flag(std::string_view name) const;
 
+  /// Sets a number the caller has checked already (a fit's trial, inside its checked grid), as
+  /// if given: no text is read. The spec must declare `name` a real and its range hold `value`
+  /// (std::logic_error otherwise: a caller's bug, not a user's input).
+  void set(std::string_view name, double value);
+
   /// Every value given, validated and converted (text read as numbers where declared so).
   const ParameterInputs& values() const noexcept { return values_; }
   /// A value as the user typed it (for messages: "1e-3", not "0.001"); "" if not given.

@@ -24,7 +24,10 @@ struct EnergyBudget {
   double plastic_dissipated = 0.0;  ///< plastic loss (added when --yield is given)
   double elastic_remaining = 0.0;   ///< elastic energy still stored when the contact ends
   double surface_remaining = 0.0;   ///< surface energy -pi a^2 gamma when the contact ends
-  double closure_error = 0.0;       ///< initial minus the sum of the others
+  /// initial minus the sum of the others; where final_kinetic comes from the energy balance
+  /// (a contact held on its adhesive branch), the integrated trajectory's kinetic energy at
+  /// the release takes its place here
+  double closure_error = 0.0;
 
   /// Sets closure_error: what the other terms leave of the initial kinetic energy (zero up
   /// to the integration error, K13 appendix C).

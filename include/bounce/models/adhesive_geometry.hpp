@@ -41,6 +41,10 @@ class AdhesiveGeometry {
   /// U_E + U_S [J], 0 for the separated pair.
   virtual double energy(double overlap) const { return elastic_energy(overlap) + surface_energy(overlap); }
 
+  /// The least energy along the branch [J] (< 0), at its state of zero force: how much kinetic
+  /// energy the attraction can give a collision beyond its impact energy.
+  virtual double least_energy() const = 0;
+
   /// Where an approaching pair jumps onto the branch (<= 0).
   virtual double snap_overlap() const = 0;
   /// Where a separating pair leaves it.

@@ -38,6 +38,12 @@ class ContactLaw {
     (void)g;
     return 0.0;
   }
+  /// The overlap (<= 0) at which an approaching pair's contact forms: 0 (touching), or before,
+  /// where an attraction of finite range pulls the surfaces together (Maugis-Dugdale's h0).
+  virtual double snap_overlap(const ContactGeometry& g) const {
+    (void)g;
+    return 0.0;
+  }
 };
 
 /// What a contact whose radius is a variable of its own (CrackContactLaw) carries from step to
@@ -105,6 +111,8 @@ struct DemModel {
   double release_overlap(const ContactGeometry& g) const {
     return crack ? crack->release_overlap(g) : normal->release_overlap(g);
   }
+  /// The overlap (<= 0) at which an approaching pair's contact forms (a crack law's: touching).
+  double snap_overlap(const ContactGeometry& g) const { return crack ? 0.0 : normal->snap_overlap(g); }
   EndRule end_rule = EndRule::overlap;         ///< force: the force is never attractive
   std::optional<TangentialModel> tangential;   ///< with a friction coefficient
 };

@@ -5,12 +5,13 @@
 //
 // One keyword <-> one row <-> one factory, in the file of its physics (src/models/*.cpp:
 // hertz with viscoelastic, jkr-viscoelastic with krijt). A row declares what the model is
-// (Traits: its engine, end rules, adhesion checks, closed forms, ...) and its own parameters;
-// the registry adds the parameters every model shares (contact_end, yield, the tangential law,
-// method) and those its traits call for (curvature radii for convex bodies; tolerance for force
-// laws; adhesive_tolerance for the contact engines, stiff_engine for the crack's). To add a
-// model: write its file with a factory that turns validated parameters into a Model (model.hpp),
-// declare the factory in src/models/factories.hpp and add its row to the table in
+// (Traits: its engine, end rules, adhesion checks, closed forms, ...) and its own parameters, as
+// the field table of its parameter struct (core/fields.hpp, model_parameters.hpp); the registry
+// adds the parameters every model shares (contact_end, yield, the tangential law, method) and
+// those its traits call for (curvature radii for convex bodies; tolerance for force laws;
+// adhesive_tolerance for the contact engines, stiff_engine for the crack's). To add a model:
+// write its file with a factory that turns its parameter struct into a Model (model.hpp),
+// declare the factory in src/models/factories.hpp and add its row (model_row) to the table in
 // src/models/registry.cpp (or, outside the library, model_registry().add(row)).
 
 #include <deque>
@@ -20,20 +21,24 @@
 #include <string_view>
 #include <vector>
 
+#include "bounce/core/fields.hpp"
 #include "bounce/core/parameters.hpp"
 #include "bounce/models/contact_law.hpp"
 #include "bounce/models/model.hpp"
+#include "bounce/models/model_parameters.hpp"
 #include "bounce/pair/pair.hpp"
 
 namespace bounce::models {
 
-/// Makes the model's physics for a pair from its validated parameters (the shared slots,
-/// end rule, yield and tangential law, are filled by make_model afterwards).
-using ModelFactory = std::function<Model(const Pair& pair, const Parameters& parameters)>;
+/// Makes the model's physics for a pair from its bound parameters and the context (the shared
+/// slots, end rule, yield and tangential law, are filled by make_model afterwards). model_row
+/// makes one from a factory of the model's parameter struct.
+using ModelFactory = std::function<Model(const Pair& pair, const Parameters& parameters, const ModelContext& context)>;
 /// Makes the model's normal law as a DEM contact law (contact_law.hpp) for a pair of materials.
-using ContactLawFactory = std::function<std::shared_ptr<const ContactLaw>(const Pair& pair, const Parameters& parameters)>;
-using CrackLawFactory =
-    std::function<std::shared_ptr<const CrackContactLaw>(const Pair& pair, const Parameters& parameters)>;
+using ContactLawFactory = std::function<std::shared_ptr<const ContactLaw>(const Pair& pair, const Parameters& parameters,
+                                                                          const ModelContext& context)>;
+using CrackLawFactory = std::function<std::shared_ptr<const CrackContactLaw>(
+    const Pair& pair, const Parameters& parameters, const ModelContext& context)>;
 
 struct ModelRow {
   std::string name;        ///< the keyword (`--model NAME`, `bounce.Model(NAME)`)
@@ -51,6 +56,37 @@ struct ModelRow {
   CrackLawFactory crack_law = {};
   bool dem() const { return contact_law || crack_law; }
 };
+
+/// The factories of a model whose parameters are the struct S of a field table.
+template <class S>
+struct TypedFactories {
+  std::function<Model(const Pair&, const S&, const ModelContext&)> model;
+  std::function<std::shared_ptr<const ContactLaw>(const Pair&, const S&, const ModelContext&)> contact_law = {};
+  std::function<std::shared_ptr<const CrackContactLaw>(const Pair&, const S&, const ModelContext&)> crack_law = {};
+};
+
+/// A row whose own parameters are the fields of `fields`: the table gives the row's specs, and
+/// each factory receives the struct read from the bound values.
+template <class S>
+ModelRow model_row(std::string name, std::string summary, std::string references, Traits traits,
+                   const FieldTable<S>& fields, TypedFactories<S> make, std::vector<std::string> fit = {}) {
+  ModelRow row{std::move(name), std::move(summary), std::move(references), std::move(traits), fields.specs(), {},
+               std::move(fit)};
+  row.factory = [fields, f = make.model](const Pair& pair, const Parameters& p, const ModelContext& c) {
+    return f(pair, fields.read(p), c);
+  };
+  if (make.contact_law) {
+    row.contact_law = [fields, f = make.contact_law](const Pair& pair, const Parameters& p, const ModelContext& c) {
+      return f(pair, fields.read(p), c);
+    };
+  }
+  if (make.crack_law) {
+    row.crack_law = [fields, f = make.crack_law](const Pair& pair, const Parameters& p, const ModelContext& c) {
+      return f(pair, fields.read(p), c);
+    };
+  }
+  return row;
+}
 
 class ModelRegistry {
  public:

@@ -9,6 +9,7 @@
 #include "bounce/analysis/collide.hpp"
 #include "bounce/analytic/master_curve.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/pair/materials_table.hpp"
 #include "master_reference.hpp"
 #include "model_helpers.hpp"
@@ -38,7 +39,7 @@ double dissipation_for(const Pair& p, double kappa, double g) {
 TEST(MasterCurve, LimitsAndMonotonicity) {
   for (EndRule rule : {EndRule::overlap, EndRule::force}) {
     EXPECT_NEAR(master_cor(0.0, rule), 1.0, 1e-14);
-    EXPECT_NEAR(viscoelastic_master(0.0, rule).contact_time, analytic::hertz_scaled_contact_time(), 1e-13);
+    EXPECT_NEAR(viscoelastic_master(0.0, rule).contact_time, bounce::contact::hertz::scaled_collision_time(), 1e-13);
     EXPECT_NEAR(viscoelastic_master(0.0, rule).max_overlap, 1.0, 1e-14);
     EXPECT_LT(master_cor(1e12, rule), 1e-18);
     double previous = 1.0 + 1e-15;
@@ -159,7 +160,7 @@ TEST(MasterCurve, EqualKappaEqualCor) {
 // A = 0 gives e = 1 and the exact Hertz contact time, by either method.
 TEST(MasterCurve, NoDissipationIsHertz) {
   const auto spec = bounce::testing::viscoelastic(ice(), 0.0);
-  const double t_hertz = analytic::hertz_contact_time(ice().hertz_constant(), ice().effective_mass(), 2.0);
+  const double t_hertz = bounce::contact::hertz::collision_time(ice().hertz_constant(), ice().effective_mass(), 2.0);
   for (Method m : {Method::master, Method::integrate}) {
     CollideOptions o;
     o.method = m;

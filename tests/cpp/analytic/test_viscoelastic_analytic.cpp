@@ -8,6 +8,7 @@
 
 #include "bounce/analytic/master_curve.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 
 using namespace bounce::analytic;
 using bounce::models::EndRule;
@@ -21,9 +22,9 @@ TEST(ViscoelasticAnalytic, ConstantsAgainstQuadrature) {
   const double t = 4.0 * boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
                              [](double s) { return s / std::sqrt(-std::expm1(2.5 * std::log1p(-s * s))); },
                              0.0, 1.0, 10, 1e-15);
-  EXPECT_NEAR(hertz_scaled_contact_time() / t, 1.0, 1e-13);
+  EXPECT_NEAR(bounce::contact::hertz::scaled_collision_time() / t, 1.0, 1e-13);
   // The printed constants are the exact ones rounded: BSHP96 (A13) 2.94, K13 (22) 2.87.
-  EXPECT_NEAR(hertz_scaled_contact_time(), 2.94, 0.005);
+  EXPECT_NEAR(bounce::contact::hertz::scaled_collision_time(), 2.94, 0.005);
   EXPECT_NEAR(hertz_contact_time_k13_constant(), 2.87, 0.005);
   // (8.91) C1 and C_i = a_i C1^i (8.90) with BP04's a3, a4: C3 ~ 0.483, C4 ~ 0.285.
   EXPECT_NEAR(c1_constant(), std::pow(5.0, 0.6) * b_constant() / std::pow(2.0, 0.2), 1e-14);
@@ -33,8 +34,8 @@ TEST(ViscoelasticAnalytic, ConstantsAgainstQuadrature) {
 
 TEST(ViscoelasticAnalytic, ContactTimeFormsAgree) {
   const double c0 = 7.3e8, m = 4.2e-3, g = 0.5, r = 5e-3, e_star = c0 * 0.75 / std::sqrt(r);
-  const double exact = hertz_contact_time(c0, m, g);
-  EXPECT_NEAR(hertz_contact_time_bshp96(c0, m, g) / exact, 2.94 / hertz_scaled_contact_time(), 1e-13);
+  const double exact = bounce::contact::hertz::collision_time(c0, m, g);
+  EXPECT_NEAR(hertz_contact_time_bshp96(c0, m, g) / exact, 2.94 / bounce::contact::hertz::scaled_collision_time(), 1e-13);
   EXPECT_NEAR(hertz_contact_time_k13(m, r, e_star, g) / exact, 2.87 / hertz_contact_time_k13_constant(), 1e-13);
 }
 

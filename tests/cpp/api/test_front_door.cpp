@@ -12,6 +12,7 @@
 #include "bounce/api/front_door.hpp"
 #include "bounce/contact/hertz.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/core/fields.hpp"
 #include "bounce/models/registry.hpp"
 
 using namespace bounce;
@@ -35,7 +36,21 @@ class LinearSpring final : public models::NormalForceModel {
   double k_, c_, m_, r_;
 };
 
-// The one row: keyword, summary, references, traits, parameters, factory.
+// Its parameters: a struct and its field table (name, unit, range, default, help, member).
+struct LinearSpringParameters {
+  double stiffness = 0.0;  // k [N/m], required
+  double damping = 0.0;    // c [N s/m]
+};
+const FieldTable<LinearSpringParameters>& toy_fields() {
+  using S = LinearSpringParameters;
+  static const FieldTable<S> table{
+      {real_parameter("stiffness", "spring stiffness k", "N/m", positive(), "spring stiffness k [N/m]"), &S::stiffness},
+      {with_default(real_parameter("damping", "dashpot c", "N s/m", non_negative(), "dashpot c [N s/m]"), 0.0),
+       &S::damping}};
+  return table;
+}
+
+// The one row: keyword, summary, references, traits, the field table, the factory.
 models::Traits toy_traits() {
   models::Traits t;
   t.adhesion = models::Adhesion::unchecked;
@@ -44,17 +59,15 @@ models::Traits toy_traits() {
 }
 
 const models::ModelRow& register_toy() {
-  static const models::ModelRow& row = models::model_registry().add(models::ModelRow{
-      "test-linear-spring", "linear spring-dashpot (test only)", "Cundall & Strack (1979)", toy_traits(),
-      {real_parameter("stiffness", "spring stiffness k", "N/m", positive(), "spring stiffness k [N/m]"),
-       real_parameter("damping", "dashpot c", "N s/m", non_negative(), "dashpot c [N s/m]")},
-      [](const Pair& pair, const Parameters& p) {
-        models::Model m;
-        m.normal = models::ForceLaw{std::make_shared<LinearSpring>(p.require_real("stiffness", "a stiffness k > 0 N/m"),
-                                                                   p.real("damping").value_or(0.0), pair.effective_mass(),
-                                                                   pair.effective_radius())};
-        return m;
-      }});
+  static const models::ModelRow& row = models::model_registry().add(models::model_row(
+      "test-linear-spring", "linear spring-dashpot (test only)", "Cundall & Strack (1979)", toy_traits(), toy_fields(),
+      models::TypedFactories<LinearSpringParameters>{
+          [](const Pair& pair, const LinearSpringParameters& p, const models::ModelContext&) {
+            models::Model m;
+            m.normal = models::ForceLaw{std::make_shared<LinearSpring>(p.stiffness, p.damping, pair.effective_mass(),
+                                                                       pair.effective_radius())};
+            return m;
+          }}));
   return row;
 }
 

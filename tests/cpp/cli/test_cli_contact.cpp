@@ -126,7 +126,7 @@ TEST(CliContact, BadInputEachCase) {
                   "(not given)");
   expect_rejected(with({"contact"}, with(ice, {"--law", "bogus"})), "--law", "bogus");
   expect_rejected(with({"contact"}, with(ice, {"--law", "jkr", "--force", "-1"})), "--force", "-1");
-  expect_rejected(with({"contact"}, with(ice, {"--law", "hertz", "--overlap", "-1e-9"})), "--overlap", "-1e-09");
+  expect_rejected(with({"contact"}, with(ice, {"--law", "hertz", "--overlap", "-1e-9"})), "--overlap", "-1e-9");
   expect_rejected(with({"contact"}, with(ice, {"--law", "maugis", "--z0", "0"})), "--z0", "0");
   expect_rejected(with({"contact"}, with(ice, {"--csv", "--forces", "1:0:5"})), "--forces", "1:0:5");
   // Data files: malformed, partial, out of range.

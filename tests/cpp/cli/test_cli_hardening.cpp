@@ -171,6 +171,16 @@ TEST(CliHardening, ContradictoryOrUnusedOptionsAreRefused) {
   EXPECT_EQ(count_lines(same.out), 128);
 }
 
+// A value is quoted as the user typed it, also where the library checks it after binding (the
+// sound speed needs the pair; docs/architecture.md, values as typed): 1e5, not 1e+05.
+TEST(CliHardening, ValuesAreQuotedAsTyped) {
+  expect_rejected(cmd("collide", ice, {"--A", "1e-6", "--velocity", "1e5"}), "--velocity", "1e5");
+  expect_rejected(cmd("collide", ice, {"--A", "1e-6", "--tvis", "1.0e-6", "--velocity", "1"}), "--tvis", "1.0e-6");
+  expect_rejected(cmd("collide", {"--material", "water-ice", "--radius", "1e-8"},
+                      {"--model", "maugis-viscoelastic", "--tvis", "1e-11", "--z0", "0.1e-7", "--velocity", "1"}),
+                  "--z0", "0.1e-7");
+}
+
 TEST(CliHardening, ParserErrorsFollowTheOneLineRule) {
   expect_rejected(cmd("collide", ice, {"--A", "1e-6", "--velocity", "1", "--velocity", "2"}), "--velocity", "1, 2");
   expect_rejected(cmd("collide", ice, {"--A", "1e-6", "--velocity=1", "--velocity", "2"}), "--velocity", "1, 2");
@@ -185,7 +195,7 @@ TEST(CliHardening, ParserErrorsFollowTheOneLineRule) {
 
 TEST(CliHardening, MessagesNameWhatTheUserTyped) {
   expect_rejected(cmd("contact", {"--radius", "1e-6", "--material", ""}, {}), "--material", "\"\"");
-  expect_rejected(cmd("contact", {"--radius", "1e308", "--material", "water-ice"}, {"--json"}), "--radius", "1e+308");
+  expect_rejected(cmd("contact", {"--radius", "1e308", "--material", "water-ice"}, {"--json"}), "--radius", "1e308");
   const auto r = run_cli(cmd("collide", ice, {"--model", "power-law", "--power-d1", "-1", "--power-d2", "1",
                                               "--power-alpha", "1", "--velocity", "1"}));
   EXPECT_EQ(r.exit_code, 2);

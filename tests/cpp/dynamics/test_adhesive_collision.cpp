@@ -12,6 +12,7 @@
 #include "bounce/analysis/sticking.hpp"
 #include "bounce/analytic/adhesive.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/contact/jkr.hpp"
 #include "bounce/dynamics/adhesive_collision.hpp"
 #include "bounce/pair/materials_table.hpp"
@@ -321,7 +322,7 @@ TEST(AdhesionValidity, StickingComparesWithTheHertzTime) {
   const Pair pair = Pair::identical(ice(), 2e-6);
   const auto out = collide(pair, bounce::testing::model(pair, "krijt", {{"tvis", 1e-11}}), 0.1);
   ASSERT_EQ(out.outcome, Outcome::stick);
-  const double t_h = analytic::hertz_contact_time(pair.hertz_constant(), pair.effective_mass(), 0.1);
+  const double t_h = bounce::contact::hertz::collision_time(pair.hertz_constant(), pair.effective_mass(), 0.1);
   ASSERT_LT(out.contact_time, 1e-6 * t_h);
   for (const auto& w : out.warnings) {
     EXPECT_EQ(w.find("(B12)"), std::string::npos) << w;

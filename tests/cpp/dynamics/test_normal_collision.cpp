@@ -10,6 +10,7 @@
 
 #include "bounce/analysis/collide.hpp"
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/dynamics/normal_collision.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "bounce/pair/materials_table.hpp"
@@ -44,7 +45,7 @@ TEST(NormalCollision, HertzIsElasticWithTheExactContactTime) {
   for (double speed : {1e-3, 0.3, 20.0}) {
     const auto out = integrate(*hertz, p.effective_mass(), speed);
     EXPECT_NEAR(out.cor, 1.0, 1e-10) << speed;
-    EXPECT_NEAR(out.contact_time / analytic::hertz_contact_time(p.hertz_constant(), p.effective_mass(), speed),
+    EXPECT_NEAR(out.contact_time / bounce::contact::hertz::collision_time(p.hertz_constant(), p.effective_mass(), speed),
                 1.0, 1e-10);
     EXPECT_NEAR(out.max_overlap / hertz->reference_overlap(speed), 1.0, 1e-10);  // BP04 (8.65)
     EXPECT_NEAR(out.energy.closure_error / out.energy.initial_kinetic, 0.0, 1e-10);

@@ -21,6 +21,7 @@
 #include <rapidcheck.h>
 
 #include "bounce/analytic/viscoelastic.hpp"
+#include "bounce/contact/hertz.hpp"
 #include "bounce/core/parameters.hpp"
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/pair.hpp"
@@ -141,7 +142,7 @@ inline rc::Gen<double> valid_speed(const Pair& p) {
 
 /// The elastic Hertz contact time at speed g [s] (exact constant, BSHP96 (A13)).
 inline double hertz_time(const Pair& p, double speed) {
-  return analytic::hertz_contact_time(p.hertz_constant(), p.effective_mass(), speed);
+  return bounce::contact::hertz::collision_time(p.hertz_constant(), p.effective_mass(), speed);
 }
 
 /// The dissipative constant A [s] that gives the pair BP04's kappa (8.70) at speed g
@@ -190,6 +191,10 @@ inline void showValue(const ModelCase& c, std::ostream& os) { os << c.name << de
 /// hertz: none. viscoelastic, viscoelastic-shifted, adhesive-viscoelastic, jkr-viscoelastic:
 /// A with A/t_c(hi) in [1e-6, 0.1] (t_c is shortest at the top speed). krijt: the same A and
 /// T_vis = f A, f in [1e-4, 0.24] (K13 after (18): A = T_vis/nu^2 with nu in [0.01, 0.49]).
+/// maugis-viscoelastic: the same A and z0 log-uniform from 1e-12 m to 1e-7 m or R_eff/10.5,
+/// whichever is smaller (the model takes the attraction's range h0 = 0.974 z0 up to R_eff/10),
+/// which puts Maugis' lambda of these pairs from the JKR end (~1e4) through the transition
+/// toward the DMT end (~1e-2).
 /// power-law, BP04 (8.63): exponents alpha in [1, 2], beta in [0.5, 1.5], gamma in [0, 1];
 /// D1 such that the elastic maximum overlap (8.65) at hi is the Hertz one (so the strain
 /// stays small), and D2 such that the damping of the scaled equation (8.66)-(8.67),
@@ -217,6 +222,11 @@ inline std::optional<rc::Gen<ModelCase>> model_parameters(const std::string& nam
   if (name == "viscoelastic" || name == "viscoelastic-shifted" || name == "adhesive-viscoelastic" ||
       name == "jkr-viscoelastic") {
     return with_end(rc::gen::map(a, [](double x) { return ParameterInputs{{"A", x}}; }));
+  }
+  if (name == "maugis-viscoelastic") {
+    const double z0_max = std::min(1e-7, pair.effective_radius() / 10.5);
+    return with_end(rc::gen::apply([](double x, double z0) { return ParameterInputs{{"A", x}, {"z0", z0}}; }, a,
+                                   log_uniform(1e-12, z0_max)));
   }
   if (name == "krijt") {
     return with_end(rc::gen::apply([](double x, double f) { return ParameterInputs{{"A", x}, {"tvis", f * x}}; },

@@ -1,0 +1,96 @@
+/* Type pairs' laws in pair_style bounce (type_laws.h). */
+
+#include "type_laws.h"
+
+#include <algorithm>
+#include <array>
+#include <sstream>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "bounce/api/front_door.hpp"
+
+namespace bounce::lammps {
+
+namespace {
+
+// A body's material keys and body 2's names for them (bounce's pair parameters).
+constexpr std::array<std::pair<const char*, const char*>, 4> body_keys{
+    {{"material", "material2"}, {"E", "E2"}, {"nu", "nu2"}, {"gamma", "gamma2"}}};
+
+bool is_body_key(const std::string& key) {
+  for (const auto& [one, two] : body_keys)
+    if (key == one || key == two) return true;
+  return false;
+}
+
+// The coefficients less the body keys: what two types must share to be mixed.
+Coeffs model_keys(const Coeffs& c) {
+  Coeffs out;
+  for (const auto& [key, value] : c)
+    if (!is_body_key(key)) out.emplace(key, value);
+  return out;
+}
+
+std::string given(const Coeffs& c, const std::string& key) {
+  const auto it = c.find(key);
+  return it == c.end() ? "(not given)" : it->second;
+}
+
+}  // namespace
+
+std::shared_ptr<const TypeLaw> make_type_law(const Coeffs& coeffs) {
+  auto entry = std::make_shared<TypeLaw>();
+  entry->coeffs = coeffs;
+  api::Inputs inputs;
+  for (const auto& [key, value] : coeffs) inputs[key] = value;
+  entry->law = api::contact_law(inputs);
+  const models::ContactGeometry unit{1.0, 1.0};
+  entry->beyond = entry->law.release_overlap(unit) < 0.0;
+  entry->snaps = entry->law.snap_overlap(unit) < 0.0;
+  return entry;
+}
+
+std::shared_ptr<const TypeLaw> mix(const TypeLaw& ii, const TypeLaw& jj, int i, int j) {
+  const Coeffs a = model_keys(ii.coeffs), b = model_keys(jj.coeffs);
+  if (a != b) {
+    // The first key in which they differ, the model's first.
+    std::string key = given(a, "model") != given(b, "model") ? "model" : "";
+    for (const auto& [k, v] : a)
+      if (given(b, k) != v && key.empty()) key = k;
+    for (const auto& [k, v] : b)
+      if (given(a, k) != v && key.empty()) key = k;
+    throw CannotMix(fmt::format(
+        "types {} and {} cannot be mixed: {} = {} for {} {} but {} for {} {} (bounce mixes two types' materials, "
+        "not their models' parameters): give pair_coeff {} {}",
+        i, j, key, given(ii.coeffs, key), i, i, given(jj.coeffs, key), j, j, std::min(i, j), std::max(i, j)));
+  }
+  if (ii.coeffs == jj.coeffs) return std::make_shared<TypeLaw>(ii);
+  // Body 2 falls back on body 1's material where it has none of its own (make_pair), so that a type
+  // J given by E and nu alone takes I's surface energy: harmless, since J's own law, valid without
+  // one, has a model that uses none (an adhesive model refuses a pair without gamma).
+  Coeffs mixed = ii.coeffs;
+  for (const auto& [one, two] : body_keys)
+    if (const auto it = jj.coeffs.find(one); it != jj.coeffs.end()) mixed[two] = it->second;
+  return make_type_law(mixed);
+}
+
+std::string to_text(const Coeffs& coeffs) {
+  std::string out;
+  for (const auto& [key, value] : coeffs) out += (out.empty() ? "" : " ") + key + "=" + value;
+  return out;
+}
+
+Coeffs from_text(const std::string& text) {
+  Coeffs out;
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    const auto at = word.find('=');
+    if (at == std::string::npos) throw std::invalid_argument("pair_style bounce: a restart's coefficient '" + word + "'");
+    out[word.substr(0, at)] = word.substr(at + 1);
+  }
+  return out;
+}
+
+}  // namespace bounce::lammps
