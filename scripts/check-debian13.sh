@@ -51,6 +51,7 @@ if grep -q " $root/" /proc/mounts; then  # never remove through a mount into the
 fi
 rm -rf "$root"
 : > "$logs/times.txt"
+echo "bounce debian13: tree $(git rev-parse --short HEAD) (git archive HEAD), started $(date -u '+%Y-%m-%d %H:%M UTC')" | tee -a "$logs/times.txt"
 
 timed() {  # timed NAME COMMAND...: runs it, its output in $logs/NAME.log, its time in times.txt
   local name=$1 start rc=0
@@ -83,8 +84,16 @@ inside 'grep PRETTY_NAME /etc/os-release' | tee -a "$logs/times.txt"
 # by hand before the two commands (they install the rest).
 timed install-make inside 'apt-get update -qq && apt-get install -y -qq --no-install-recommends make'
 timed make-test inside 'make test'
-timed make-demo inside 'make demo && for f in bshp96-fig1 bshp96-fig2 bp04-fig8-2 k13-fig2 k13-fig3 k13-fig4 k13-fig5 k13-figC1 k13-figC2; do
-  for e in png svg; do test -s out/figures/$f.$e || { echo "missing out/figures/$f.$e"; exit 1; }; done; done && test -s out/report.md'
+# Every figure of the registry (bounce.plot.FIGURES), as PNG and SVG, and the report.
+timed make-demo inside 'make demo && /usr/bin/python3 -c "
+import os, sys
+sys.path.insert(0, \"build/python\")
+from bounce import plot
+missing = [f\"out/figures/{n}.{e}\" for n in plot.FIGURES for e in (\"png\", \"svg\")
+           if not os.path.isfile(f\"out/figures/{n}.{e}\") or os.path.getsize(f\"out/figures/{n}.{e}\") == 0]
+print(f\"figures: {len(plot.FIGURES)} written\" if not missing else f\"missing {missing}\")
+sys.exit(1 if missing else 0)
+" && test -s out/report.md'
 timed make-check-pip inside 'make check-pip'
 { inside 'dpkg-query -W -f "\${Package} \${Version}\n" g++ clang cmake libsundials-dev libboost-dev libfmt-dev \
   libcli11-dev pybind11-dev python3 python3-numpy python3-setuptools' || true; } | tee -a "$logs/times.txt"
