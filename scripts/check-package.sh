@@ -128,9 +128,10 @@ else
   grep -q "pair style plugin bounce" "$work/load.out" || { cat "$work/load.out" >&2; fail "plugin = $plugin is invalid: expected pair style bounce listed after plugin load"; }
   step "plugin $plugin loads in $lmp by plugin load"
   # LAMMPS_PLUGIN_PATH (loading every *plugin.so of its folders at start) is newer than 20220106:
-  # checked where the LAMMPS has it (its library names the variable).
+  # checked where the LAMMPS has it (its library has the message of that loading; the
+  # variable's name is built inline by the compiler, not kept as a string).
   liblammps=$(ldd "$lmp" | awk '/liblammps/ {print $3}')
-  if grep -aq LAMMPS_PLUGIN_PATH "$lmp" ${liblammps:+"$liblammps"}; then
+  if grep -aq "plugins from" "$lmp" ${liblammps:+"$liblammps"}; then
     printf 'plugin list\n' > "$work/in.path"
     (cd "$work" && LAMMPS_PLUGIN_PATH=$(dirname "$plugin") "$lmp" -log none -in in.path > path.out 2>&1) ||
       { cat "$work/path.out" >&2; fail "LAMMPS_PLUGIN_PATH = $(dirname "$plugin") is invalid: expected lmp to start with it"; }
