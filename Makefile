@@ -43,7 +43,7 @@ SANITIZE_DEPS := clang libclang-rt-dev libomp-dev ccache clang-tidy
 SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:strict_init_order=1 \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
-.PHONY: all build deps deps-sanitize configure test demo bench check-long lint clean \
+.PHONY: all build deps deps-sanitize configure test demo bench check-long check-posterior lint clean \
         build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip check-debian13
 
 all: build
@@ -127,6 +127,11 @@ bench: deps
 check-long: deps
 	@$(MAKE) --no-print-directory build
 	cd $(BUILD_DIR) && ctest --output-on-failure -L long
+
+# bounce.posterior's calibration over 100 synthetic data sets (docs/fitting.md, Posteriors; ~15 min).
+check-posterior: deps
+	@$(MAKE) --no-print-directory build
+	PYTHONPATH=$(BUILD_DIR)/python $(PYTHON) tools/posterior_calibration.py 100 1
 
 lint: build
 	@./scripts/install-deps.sh clang-tidy

@@ -11,7 +11,8 @@
 // leaves the bytes to libFuzzer's own mutations. Crossovers cut at option boundaries.
 // Properties: the CLI's contract (fuzz/oracle.hpp, docs/hardening.md). Work is capped, not
 // judged: inputs with a range of more than 8 points (64 for `contact`) or more than 10000
-// trajectory samples are skipped, and so are `fit` (fuzz_fit_data reads its data) and --help
+// trajectory samples are skipped, and so are a `fit` without a small --grid (small_fit: at
+// most 3 values an axis, 8 in all; @DATA@ is a 4-point data file, @FILE@ any text) and --help
 // beside other options.
 #include <charconv>
 #include <cmath>
@@ -87,6 +88,7 @@ std::vector<Option> own_options(const std::string& command) {
       {"sticking", {{"json", "flag"}, {"progress", "flag"}}},
       {"rules", {{"input", "file"}}},
       {"table", {{"json", "flag"}, {"csv", "flag"}, {"c_header", "prefix"}, {"load", "file"}, {"progress", "flag"}}},
+      {"fit", {{"json", "flag"}, {"progress", "flag"}, {"data", "file"}, {"columns", "prefix"}}},
   };
   std::vector<Option> out;
   if (const auto it = own.find(command); it != own.end()) {
@@ -160,7 +162,7 @@ std::string range_text(Rng& rng, bool with_count) {
 }
 
 std::string file(Rng& rng) {
-  return pick(rng, std::vector<std::string>{"@MATERIALS@", "@TABLE@", "@TTABLE@", "@RULES@", "@FILE@", "-",
+  return pick(rng, std::vector<std::string>{"@MATERIALS@", "@TABLE@", "@TTABLE@", "@RULES@", "@FILE@", "@DATA@", "-",
                                             "/nonexistent/file", "/"});
 }
 
@@ -276,6 +278,7 @@ std::string substituted(std::string arg, const std::string& text_file) {
       {"@TABLE@", BOUNCE_FUZZ_DIR "/corpus/table/normal-krijt.json"},
       {"@TTABLE@", BOUNCE_FUZZ_DIR "/corpus/table/tangential-viscoelastic.json"},
       {"@RULES@", BOUNCE_SOURCE_DIR "/tests/golden/rules-oblique.json"},
+      {"@DATA@", BOUNCE_FUZZ_DIR "/corpus/cli-data/small.csv"},
   };
   for (const auto& [key, path] : files) {
     for (auto at = arg.find(key); at != std::string::npos; at = arg.find(key)) arg.replace(at, key.size(), path);
@@ -286,10 +289,39 @@ std::string substituted(std::string arg, const std::string& text_file) {
 
 // Work the harness does not wait for: long sweeps and trajectories; and --help among other
 // options (one static text: mutations and crossovers would spread it over the corpus).
+// A fit of a small grid: every axis of --grid (P=LO:HI:N,...) with N <= 3, at most 8 points in
+// all, a quick model or --grid-only, and no batch (its manifest's fits have their own grids). A default grid integrates
+// thousands of collisions (minutes under the sanitizers).
+// The refinement after the grid takes hundreds of trials: with the adhesive engines (the
+// default krijt) only with --grid-only.
+bool small_fit(const std::vector<std::string>& args) {
+  bool grid = false, quick = false;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    quick = quick || args[i] == "--grid-only" ||
+            (i + 1 < args.size() && args[i] == "--model" && args[i + 1].starts_with("viscoelastic"));
+  }
+  if (!quick) return false;
+  for (std::size_t i = 1; i + 1 < args.size(); ++i) {
+    if (args[i] == "--batch") return false;
+    if (args[i] != "--grid") continue;
+    grid = true;
+    long points = 1;
+    for (std::size_t at = args[i + 1].find(':'); at != std::string::npos; at = args[i + 1].find(':', at + 1)) {
+      const std::string& g = args[i + 1];
+      const std::size_t end = std::min(g.find(',', at), g.size());
+      if (g.find(':', at + 1) < end) continue;  // LO:HI: the count follows the second colon
+      long n = 0;
+      const auto [stop, ec] = std::from_chars(g.data() + at + 1, g.data() + end, n);
+      if (ec != std::errc() || stop != g.data() + end || n > 3) return false;
+      points *= n;
+    }
+    if (points > 8) return false;
+  }
+  return grid;
+}
+
 bool too_much_work(const std::vector<std::string>& args) {
-  // A fit integrates thousands of collisions (minutes under the sanitizers); its data reader
-  // has its own target (fuzz_fit_data) and its options the tests of tests/cpp/cli.
-  if (!args.empty() && args.front() == "fit") return true;
+  if (!args.empty() && args.front() == "fit" && !small_fit(args)) return true;
   const long max_points = !args.empty() && args.front() == "contact" ? 64 : 8;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];

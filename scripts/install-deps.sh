@@ -11,7 +11,7 @@ packages=(
   nlohmann-json3-dev libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev
   libnlopt-cxx-dev libopenmpi-dev openmpi-bin
   pybind11-dev python3 python3-dev python3-numpy python3-matplotlib
-  python3-scipy python3-pytest
+  python3-scipy python3-pytest python3-emcee
   "$@"
 )
 

@@ -8,4 +8,9 @@ namespace bounce::cli {
 /// std::cerr; the exit code (docs/cli.md: 0 ok, 2 bad input, 3 refused or not computable).
 int run(int argc, const char* const* argv);
 
+/// Ctrl-C (SIGINT) ends the process with exit code 130 and one line on stderr; what was written
+/// to stdout stays (the streamed rows of a curve or a table are flushed one by one, docs/cli.md).
+/// main() installs it; the in-process fuzz target does not.
+void exit_on_interrupt();
+
 }  // namespace bounce::cli

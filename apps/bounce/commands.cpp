@@ -11,6 +11,7 @@
 #include "bounce/core/error.hpp"
 #include "batch.hpp"
 #include "output.hpp"
+#include "stream.hpp"
 #include "text.hpp"
 
 namespace bounce::cli {
@@ -82,7 +83,8 @@ std::function<int()> contact(Options& o) {
       throw InvalidArgument(range, std::get<std::string>(in.at(range)), "--csv with a range (it prints a CSV curve)");
     }
     if (*csv) {
-      print_csv(api::contact_curve(in));
+      CsvStream rows;
+      api::contact_curve(in, [&rows](const Table& row) { rows.write(row); });
       return 0;
     }
     const Record out = api::contact(in);
@@ -99,8 +101,10 @@ std::function<int()> collide(Options& o) {
     const api::Inputs in = o.inputs();
     if (*csv && !in.count("trajectory")) throw InvalidArgument("csv", "given", "--trajectory with --csv (the trajectory as CSV)");
     const Record out = api::collide(in);
-    if (*csv) {
+    if (*csv) {  // CSV has no place for the notes (a thinned trajectory) and warnings: stderr
       print_csv(out.at("trajectory").table());
+      for (const Value& note : out.at("notes").list()) std::cerr << "bounce: note: " << note.text() << '\n';
+      print_warnings(out);
     } else {
       *json ? print_json(out) : print_text(out, collide_text(out));
     }
@@ -115,13 +119,27 @@ std::function<int()> curve(Options& o) {
   return [&o, json, progress] {
     one_format(o, {"json", "csv"});
     Progress report("bounce curve", *progress);
-    const Record out = api::curve(o.inputs(), std::ref(report));
-    if (*json) {
-      print_json(out);
-    } else {
-      print_csv(api::curve_table(out));
-      print_warnings(out);
+    if (*json) {  // the points wait in a temporary file for the boundaries, which sort first
+      JsonSpool points;
+      const Record rest = api::curve(o.inputs(), [&](const Record& p) { points.add(p, 1); }, std::ref(report));
+      require_finite(rest);
+      std::cout << "{\n  \"boundaries\": ";
+      write_json(std::cout, rest.at("boundaries"), 1);
+      std::cout << ",\n  \"points\": ";
+      points.print_list(std::cout, 1);
+      std::cout << "\n}\n";
+      return 0;
     }
+    CsvStream rows;  // each row written as it is computed; CSV has no place for the boundaries
+    WarningTally warnings;
+    api::curve(
+        o.inputs(),
+        [&](const Record& p) {
+          rows.write(api::curve_table(Record().set("points", Value::List{p})));
+          warnings.add(p);
+        },
+        std::ref(report), false);
+    warnings.print();
     return 0;
   };
 }
@@ -146,13 +164,22 @@ std::function<int()> sticking(Options& o) {
       return 0;
     }
     Progress report("bounce sticking", *progress);
-    const Value rows = api::sticking_over_radii(in, std::ref(report));
     if (*json) {
-      print_json(rows);
-    } else {
-      print_csv(api::sticking_table(rows));
-      print_warnings(rows);
+      JsonListStream rows;
+      api::sticking_over_radii(in, [&rows](const Record& r) { rows.add(r); }, std::ref(report));
+      rows.close();
+      return 0;
     }
+    CsvStream rows;
+    WarningTally warnings;
+    api::sticking_over_radii(
+        in,
+        [&](const Record& r) {
+          rows.write(api::sticking_table(Value::List{r}));
+          warnings.add(r);
+        },
+        std::ref(report));
+    warnings.print();
     return 0;
   };
 }
@@ -192,7 +219,14 @@ std::function<int()> table(Options& o) {
   return [&o, prefix, load, progress] {
     if (o.given("load")) {
       const std::string text = read_file("load", *load, "a readable JSON file written by bounce table --json");
-      const Record out = api::table_value(text, o.inputs());
+      const Record out = [&] {
+        try {
+          return api::table_value(text, o.inputs());
+        } catch (const InvalidArgument& e) {  // the file named as typed
+          if (e.parameter() != "load") throw;
+          throw InvalidArgument("load", *load, e.allowed());
+        }
+      }();
       o.given("json") ? print_json(out) : print_text(out, table_value_text(out));
       return 0;
     }
@@ -226,17 +260,32 @@ int fit_batch(const Options& o, const std::string& manifest, const std::string* 
 }
 
 std::function<int()> fit(Options& o) {
-  const std::string* data = o.add_text("data", "CSV of the measured restitution curve (docs/fitting.md; - for standard input)", "FILE");
+  const std::string* data = o.add_text(
+      "data",
+      "CSV of the measured restitution curve: a header naming the columns velocity [m/s], cor and optionally "
+      "cor_error, outcome (bounce|stick), any case, a unit in brackets; comma, tab or semicolon separated "
+      "(docs/fitting.md; - for standard input)",
+      "FILE");
+  const std::string* columns = o.add_text(
+      "columns", "the file's names of the columns, e.g. velocity=Speed,cor=e,cor_error=sigma (with --data)", "MAP");
   const std::string* batch = o.add_text("batch", "TOML manifest of experiments to fit (mpirun -np N: over N ranks)", "FILE");
   const std::string* checkpoint = o.add_text("checkpoint", "with --batch: keep finished grid blocks in DIR, reuse them", "DIR");
   const bool* json = o.add_flag("json", "print JSON");
   const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
-  return [&o, data, batch, checkpoint, json, progress] {
-    if (o.given("batch")) return fit_batch(o, *batch, checkpoint, *json, *progress);
+  return [&o, data, columns, batch, checkpoint, json, progress] {
+    if (o.given("batch")) {
+      if (o.given("columns")) throw InvalidArgument("columns", *columns, "--data with it (a manifest's experiment has its own columns key)");
+      return fit_batch(o, *batch, checkpoint, *json, *progress);
+    }
     if (o.given("checkpoint")) throw InvalidArgument("checkpoint", *checkpoint, "--batch with it (a batch's blocks)");
     if (!o.given("data")) throw InvalidArgument("data", "(not given)", "a CSV file of velocity,cor[,cor_error][,outcome]");
     const std::string text = read_file("data", *data, "a readable CSV file (or - for standard input)");
-    const analysis::Experiment experiment = analysis::parse_experiment(text, *data == "-" ? "(standard input)" : *data);
+    const analysis::ColumnNames names = o.given("columns") ? analysis::parse_column_names(*columns) : analysis::ColumnNames{};
+    const analysis::Experiment experiment =
+        analysis::parse_experiment(text, *data == "-" ? "(standard input)" : *data, names);
+    if (!*json && o.inputs().count("chi2_grid")) {
+      throw InvalidArgument("chi2_grid", "given", "--json with it (the whole chi^2 grid is printed as JSON only)");
+    }
     Progress report("bounce fit", *progress);
     const Record out = api::fit(o.inputs(), experiment, std::ref(report));
     *json ? print_json(out) : print_text(out, fit_text(out));

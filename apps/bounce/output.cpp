@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <new>
 #include <set>
 #include <iostream>
 
@@ -14,6 +15,7 @@
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "options.hpp"
+#include "stream.hpp"
 
 namespace bounce::cli {
 
@@ -47,25 +49,26 @@ struct ToJson {
   }
 };
 
-// `null_refused`: a saved table has no nulls, so one there is a non-finite number that
-// nlohmann wrote as null.
-void check_finite(const nlohmann::json& value, const std::string& path, bool null_refused = false) {
-  if (null_refused && value.is_null()) {
+// A saved table (JSON text) has no nulls: one there is a non-finite number that nlohmann wrote
+// as null.
+void check_table_json(const nlohmann::json& value, const std::string& path) {
+  if (value.is_null()) {
     throw NumericalError(fmt::format("table value {} is not finite; refusing to print the table", path));
   }
-  if (value.is_number_float() && !std::isfinite(value.get<double>())) {
-    throw NumericalError(fmt::format("result {} = {} is outside the range of double precision (inputs too extreme "
-                                     "for this computation); refusing to print it",
-                                     path.substr(path.find('.') + 1), value.get<double>()));
-  }
   if (value.is_object()) {
-    for (const auto& [key, item] : value.items()) check_finite(item, path + "." + key, null_refused);
+    for (const auto& [key, item] : value.items()) check_table_json(item, path + "." + key);
   } else if (value.is_array()) {
-    for (std::size_t i = 0; i < value.size(); ++i) {
-      check_finite(value[i], path + "[" + std::to_string(i) + "]", null_refused);
-    }
+    for (std::size_t i = 0; i < value.size(); ++i) check_table_json(value[i], path + "[" + std::to_string(i) + "]");
   }
 }
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+nlohmann::json to_json(const Value& value) { return std::visit(ToJson{}, value.data()); }
 
 std::string csv_cell(const Value& v, std::size_t column) {
   if (v.is_null()) return "";
@@ -78,35 +81,24 @@ std::string csv_cell(const Value& v, std::size_t column) {
   return fmt::format("{}", x);
 }
 
-double now_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+void require_finite(const Value& result) {
+  if (const std::string at = non_finite_at(result); !at.empty()) {
+    throw NumericalError(fmt::format("result {} is outside the range of double precision (inputs too extreme for this "
+                                     "computation); refusing to print it",
+                                     at));
+  }
 }
-
-}  // namespace
-
-nlohmann::json to_json(const Value& value) { return std::visit(ToJson{}, value.data()); }
-
-void require_finite(const Value& result) { check_finite(to_json(result), "$"); }
 
 void print_json(const Value& value) {
-  const nlohmann::json j = to_json(value);
-  check_finite(j, "$");
-  std::cout << j.dump(2) << '\n';
+  require_finite(value);  // before a byte is written
+  write_json(std::cout, value);
+  std::cout << '\n';
 }
 
-void print_csv(const Table& table) {
-  std::string text;
-  for (std::size_t i = 0; i < table.columns.size(); ++i) text += (i ? "," : "") + table.columns[i];
-  text += '\n';
-  for (const auto& row : table.rows) {
-    for (std::size_t i = 0; i < row.size(); ++i) text += (i ? "," : "") + csv_cell(row[i], i);
-    text += '\n';
-  }
-  std::cout << text;
-}
+void print_csv(const Table& table) { CsvStream().write(table); }
 
 void print_text(const std::string& text, const std::string& json) {
-  check_finite(nlohmann::json::parse(json), "table", true);
+  check_table_json(nlohmann::json::parse(json), "table");
   std::cout << text;
 }
 
@@ -120,40 +112,9 @@ void print_warnings(const std::vector<std::string>& warnings) {
 }
 
 void print_warnings(const Value& result) {
-  // One line per kind of warning: the last row's (the fastest or largest), and how many rows had it.
-  std::map<std::string, std::pair<std::string, int>> kinds;
-  std::vector<std::string> order;
-  const std::function<void(const Value&, const std::string&)> walk = [&](const Value& v, const std::string& where) {
-    if (const auto* list = std::get_if<Box<Value::List>>(&v.data())) {
-      for (const Value& item : **list) walk(item, where);
-      return;
-    }
-    const auto* boxed = std::get_if<Box<Record>>(&v.data());
-    if (boxed == nullptr) return;
-    const Record& r = **boxed;
-    std::string here = where;
-    for (const char* key : {"velocity", "radius"}) {
-      if (r.contains(key) && std::holds_alternative<double>(r.at(key).data())) {
-        here = fmt::format("at {} {:g}: ", key, r.at(key).number());
-      }
-    }
-    for (const auto& [key, item] : r.fields()) {
-      if (key != "warnings") {
-        walk(item, here);
-        continue;
-      }
-      for (const Value& w : item.list()) {
-        auto [it, fresh] = kinds.try_emplace(message_kind(w.text()), here + w.text(), 0);
-        if (fresh) order.push_back(it->first);
-        it->second = {here + w.text(), it->second.second + 1};
-      }
-    }
-  };
-  walk(result, "");
-  for (const std::string& kind : order) {
-    const auto& [text, rows] = kinds.at(kind);
-    std::cerr << "bounce: warning: " << text << (rows > 1 ? fmt::format(" ({} rows in all)", rows) : "") << '\n';
-  }
+  WarningTally tally;
+  tally.add(result);
+  tally.print();
 }
 
 Progress::Progress(std::string what, bool forced)
@@ -162,10 +123,15 @@ Progress::Progress(std::string what, bool forced)
 void Progress::operator()(std::size_t done, std::size_t total) {
   if (!enabled_) return;
   const double t = now_seconds() - start_;
-  if ((total == 0 || done < total) && t - last_ < 1.0) return;  // at most once a second
+  // At most once a second, but at once where a phase of known size gives way to an adaptive one
+  // (a fit's grid to its refinement and ranges), so that no phase runs silently.
+  const bool phase_change = total == 0 && last_total_ != 0;
+  if (!phase_change && (total == 0 || done < total) && t - last_ < 1.0) return;
   last_ = t;
+  last_total_ = total;
   if (total == 0) {  // an adaptive run: its size is not known in advance
-    std::cerr << fmt::format("{}: {} collisions, {:.1f} s\n", what_, done, t);
+    std::cerr << fmt::format("{}: {} collisions{}, {:.1f} s\n", what_, done,
+                             phase_change ? " (the grid done; refining, its size not known in advance)" : "", t);
     return;
   }
   std::cerr << fmt::format("{}: {}/{} ({:.0f}%) {:.1f} s\n", what_, done, total,
@@ -188,6 +154,9 @@ int run_guarded(const std::function<int()>& body, const std::set<std::string>& o
     return 2;
   } catch (const NumericalError& e) {
     std::cerr << "bounce: numerical error: " << e.what() << '\n';
+    return 3;
+  } catch (const std::bad_alloc&) {  // every output is bounded (docs/cli.md, "Memory"): a machine too small
+    std::cerr << "bounce: numerical error: out of memory: the computation does not fit in this machine's memory\n";
     return 3;
   } catch (const std::exception& e) {
     std::cerr << "bounce: internal error: " << e.what() << '\n';

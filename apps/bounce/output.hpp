@@ -24,6 +24,9 @@ void print_csv(const Table& table);
 /// Refuse a result holding a NaN or an infinity anywhere (NumericalError naming the field):
 /// every output format goes through this, so no format can print one.
 void require_finite(const Value& result);
+/// One CSV cell: numbers in their shortest round-trip form, text quoted when it holds a space,
+/// a comma or a quote, null empty; NumericalError for a number that is not finite.
+std::string csv_cell(const Value& v, std::size_t column);
 /// Write `text`, the words for `result`, to stdout, after require_finite(result).
 void print_text(const Value& result, const std::string& text);
 /// Write generated text (a table as JSON, CSV or C) to stdout. `json`: the same content as
@@ -48,6 +51,7 @@ class Progress {
   bool enabled_;
   double start_;
   double last_ = -1.0;
+  std::size_t last_total_ = 0;
 };
 
 /// Runs a command under the error policy: InvalidArgument -> one line on stderr naming the

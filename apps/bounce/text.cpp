@@ -75,11 +75,19 @@ std::string collide_text(const Record& out) {
 std::string contact_text(const Record& out) {
   const Record& pair = out.at("pair").record();
   std::string s = fmt::format("law: {}\n", str(out, "law"));
-  s += fmt::format("pair: R_eff = {:.6g} m, m_eff = {:.6g} kg, E* = {:.6g} Pa", num(pair, "effective_radius"),
-                   num(pair, "effective_mass"), num(pair, "effective_modulus"));
+  if (out.contains("ellipse")) {  // the curvatures shape the contact: the spheres' R_eff does not enter
+    const Record& e = out.at("ellipse").record();
+    s += fmt::format("pair: curvatures B1 = {:.6g} 1/m, B2 = {:.6g} 1/m (the contact's; not the spheres' R_eff), "
+                     "m_eff = {:.6g} kg, E* = {:.6g} Pa",
+                     num(e, "b1"), num(e, "b2"), num(pair, "effective_mass"), num(pair, "effective_modulus"));
+  } else {
+    s += fmt::format("pair: R_eff = {:.6g} m, m_eff = {:.6g} kg, E* = {:.6g} Pa", num(pair, "effective_radius"),
+                     num(pair, "effective_mass"), num(pair, "effective_modulus"));
+  }
   if (!pair.at("surface_energy").is_null()) s += fmt::format(", gamma = {:.6g} J/m^2", num(pair, "surface_energy"));
   s += "\n";
-  s += fmt::format("contact radius a     = {:.6g} m\n", num(out, "contact_radius"));
+  const char* radius_label = out.contains("ellipse") ? "contact radius sqrt(ab)" : "contact radius a    ";
+  s += fmt::format("{} = {:.6g} m\n", radius_label, num(out, "contact_radius"));
   s += fmt::format("overlap        delta = {:.6g} m\n", num(out, "overlap"));
   s += fmt::format("force          F     = {:.6g} N\n", num(out, "force"));
   if (out.contains("ellipse")) {
@@ -207,13 +215,27 @@ std::string range_text(const Value& range) {
   return fmt::format("{} .. {}", end(ends[0], ""), end(ends[1], ""));
 }
 
+// A parameter the data do not determine has no best value (null) but a lower limit.
 std::string fitted_lines(const Record& f, const char* best_key, const char* range_key) {
   std::string s;
   for (const Value& name : f.at("fitted").list()) {
     const std::string& n = name.text();
-    s += fmt::format("  {:<8} = {:<12.6g} range {}\n", n, f.at(best_key).record().at(n).number(),
-                     range_text(f.at(range_key).record().at(n)));
+    const Value& best = f.at(best_key).record().at(n);
+    if (best.is_null() && f.contains("lower_limits") && f.at("lower_limits").record().contains(n)) {
+      s += fmt::format("  {:<8} >= {:<11.4g} (a lower limit: the data do not determine it)\n", n,
+                       f.at("lower_limits").record().at(n).number());
+      continue;
+    }
+    s += fmt::format("  {:<8} = {:<12.6g} range {}\n", n, best.number(), range_text(f.at(range_key).record().at(n)));
   }
+  return s;
+}
+
+std::string timing_lines(const Record& f) {
+  if (!f.contains("timing")) return {};
+  std::string s = "timing:";
+  for (const auto& [key, value] : sorted(f.at("timing").record())) s += fmt::format(" {} {:.3g} s,", key, value.number());
+  s.back() = '\n';
   return s;
 }
 
@@ -225,7 +247,9 @@ std::string fit_text(const Record& f) {
   s += fmt::format("chi2 (K13 (31), mean squared residual) = {:.6g}; ranges: chi2 <= 2 chi2_min (K13 §4.1)\n",
                    num(f, "chi2"));
   s += fitted_lines(f, "best", "ranges");
-  for (const auto& [key, value] : sorted(f.at("normalised").record())) s += fmt::format("  {} = {:.4g}\n", key, value.number());
+  for (const auto& [key, value] : sorted(f.at("normalised").record())) {
+    if (!value.is_null()) s += fmt::format("  {} = {:.4g}\n", key, value.number());
+  }
   if (f.contains("chi2_weighted")) {
     s += fmt::format("proper chi2 = {:.6g}", num(f, "chi2_weighted"));
     if (!f.at("reduced_chi2").is_null()) s += fmt::format(", reduced {:.4g}", num(f, "reduced_chi2"));
@@ -240,6 +264,7 @@ std::string fit_text(const Record& f) {
                        num(c, "aic"), num(c, "bic"));
     }
   }
+  s += timing_lines(f);
   s += lines("warning", f.at("warnings"));
   return s;
 }

@@ -44,6 +44,7 @@ from ._bounce import (  # noqa: F401
     viscoelastic_scales,
 )
 from ._bounce import __version__  # noqa: F401  (the library's, the CMake project's version)
+from .posterior import posterior  # noqa: F401  (emcee over a fit's parameters)
 
 
 __all__ = [
@@ -66,6 +67,7 @@ __all__ = [
     "material_names",
     "materials",
     "models",
+    "posterior",
     "sticking",
     "sticking_velocity",
     "viscoelastic_scales",

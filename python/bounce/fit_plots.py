@@ -9,6 +9,8 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.ticker import NullFormatter
 
+from ._bounce import models
+
 
 def _axes(ax: Axes | None) -> Axes:
     return ax if ax is not None else Figure(figsize=(6.4, 4.4), layout="constrained").add_subplot()
@@ -27,12 +29,13 @@ def fit_curve(result: dict, ax: Axes | None = None, title: str | None = None) ->
         ax.errorbar(v, e, yerr=errors.astype(float), fmt="o", ms=4, color="k", label="data")
     else:
         ax.plot(v, e, "o", ms=4, color="k", label="data")
-    best = ", ".join(f"{k} = {x:.3g}" for k, x in result["best"].items())
+    limits = result.get("lower_limits", {})  # a parameter the data do not determine: a lower limit
+    best = ", ".join(f"{k} = {x:.3g}" if x is not None else f"{k} >= {limits[k]:.3g}" for k, x in result["best"].items())
     ax.plot(curve["velocity"], curve["cor"], color="C3", label=f"{result['model']}: {best}")
     jkr = np.asarray(curve["cor_jkr"], dtype=object)
     if all(x is not None for x in jkr):
         ax.plot(curve["velocity"], jkr.astype(float), "--", color="C0", label="JKR (24) at the fitted $\\gamma$")
-    if "yield" in result["best"]:
+    if result["best"].get("yield") is not None:
         ax.plot(curve["velocity"], curve["cor_plastic"], ":", color="C2", label="plastic $e_P$ (29)")
     ax.set_xscale("log")
     ax.set_ylim(0, 1.05)
@@ -67,13 +70,24 @@ def chi2_map(result: dict, x: str = "gamma", y: str = "tvis", ax: Axes | None = 
     if np.nanmin(plane) <= level:  # else the factor-2 region lies between grid values
         ax.contour(xs, ys, plane, levels=[level], colors="w", linewidths=1.2)
         label += r"; white: $\chi^2 = 2\chi^2_{min}$"
-    ax.plot(result["best"][x], result["best"][y], "r*", ms=10, label=label)
+    best = [result["best"][n] if result["best"][n] is not None else result["lower_limits"][n] for n in (x, y)]
+    ax.plot(*best, "r*", ms=10, label=label)
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel(x)
-    ax.set_ylabel(y)
+    ax.set_xlabel(_axis_label(result["model"], x))
+    ax.set_ylabel(_axis_label(result["model"], y))
     ax.legend(fontsize=7, loc="upper right")
     return ax
+
+
+def _axis_label(model: str, name: str) -> str:
+    """``name [unit]`` from the model's parameter table (gamma from the pair's: J/m^2)."""
+    units = {"gamma": "J m$^{-2}$"}
+    for row in models()["models"]:
+        if row["name"] == model:
+            units.update({p["name"]: p["unit"] for p in row["parameters"] if p.get("unit")})
+    unit = units.get(name, "")
+    return f"{name} [{unit}]" if unit else f"{name} [-]"
 
 
 def _normalised_range(fit: dict, name: str, scale: float) -> tuple[float, float | None, float | None]:

@@ -24,6 +24,7 @@ from matplotlib.figure import Figure
 
 from . import _bounce as b
 from .fit_plots import batch_summary, chi2_map, fit_curve  # noqa: F401  (K13 Figs 6, 7, 8 and a fit's chi^2)
+from .posterior_plots import corner  # noqa: F401  (a posterior's marginals and pairwise densities)
 
 # --- the set-ups of the papers ---------------------------------------------------------
 
@@ -354,7 +355,8 @@ def energy_budget(pair: b.Pair, model: b.Model, velocity: float, ax: Axes | None
         ax.plot(ns, t[key] / u0, style, lw=1.3 if key != "bulk_dissipated" else 0.9, label=label)
     ax.axhline(0, color="0.6", lw=0.5)
     ax.set_xlabel("time [ns]")
-    ax.set_ylabel("energy / initial kinetic energy")
+    ax.set_ylabel("energy / initial kinetic energy [-]")
+    ax.legend(fontsize=8)
     return ax
 
 

@@ -8,6 +8,7 @@
 
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
+#include "fit.hpp"
 #include "objects.hpp"
 
 namespace bounce::python {
@@ -48,8 +49,41 @@ analysis::Experiment from_arrays(const py::object& velocity, const py::object& c
   }
 }
 
-analysis::Experiment from_file(const std::string& path) {
-  return analysis::parse_experiment(read_text_file("data", path, "a readable CSV file (docs/fitting.md)"), path);
+// columns={"velocity": "Speed", "cor": "e"} or "velocity=Speed,cor=e": the CLI's --columns.
+analysis::ColumnNames column_names(const py::object& columns) {
+  if (columns.is_none()) return {};
+  if (py::isinstance<py::str>(columns)) return analysis::parse_column_names(columns.cast<std::string>());
+  if (!py::isinstance<py::dict>(columns)) throw py::type_error("columns: expected a dict {ours: the file's name} or a str");
+  std::vector<std::string> pairs;
+  for (const auto& [key, value] : columns.cast<py::dict>()) {
+    if (!py::isinstance<py::str>(key) || !py::isinstance<py::str>(value)) {
+      throw py::type_error("columns: expected names (str) as keys and values");
+    }
+    pairs.push_back(fmt::format("{}={}", key.cast<std::string>(), value.cast<std::string>()));
+  }
+  return analysis::parse_column_names(fmt::format("{}", fmt::join(pairs, ",")));
+}
+
+analysis::Experiment from_file(const std::string& path, const analysis::ColumnNames& names) {
+  return analysis::parse_experiment(read_text_file("data", path, "a readable CSV file (docs/fitting.md)"), path, names);
+}
+
+}  // namespace
+
+analysis::Experiment experiment_from(const py::object& velocity, const py::object& cor, const py::object& cor_error,
+                                     const py::object& data, const py::object& columns) {
+  if (!columns.is_none() && data.is_none()) {
+    throw InvalidArgument("columns", py::str(columns), "data (a CSV file) with it: arrays have no column names");
+  }
+  if (!data.is_none() && !(velocity.is_none() && cor.is_none() && cor_error.is_none())) {
+    throw InvalidArgument("data", py::str(data), "either data (a file) or velocity and cor (arrays), not both");
+  }
+  if (data.is_none() && (velocity.is_none() || cor.is_none())) {
+    throw InvalidArgument("velocity", "None", "arrays velocity and cor (or data, a CSV file)");
+  }
+  if (!data.is_none() && !py::isinstance<py::str>(data)) throw py::type_error("data: expected a file name (str)");
+  return data.is_none() ? from_arrays(velocity, cor, cor_error)
+                        : from_file(data.cast<std::string>(), column_names(columns));
 }
 
 // fit=("gamma", "tvis") or "gamma,tvis"; grid={"gamma": (lo, hi, n)}: the front door's text.
@@ -77,6 +111,8 @@ std::string grid_text(const py::dict& grid) {
   return fmt::format("{}", fmt::join(items, ","));
 }
 
+namespace {
+
 // chi2_grid as an array of its shape (NaN where the collisions failed), with the axes.
 void grid_to_numpy(py::dict& d) {
   if (!d.contains("chi2_grid")) return;
@@ -97,17 +133,9 @@ void grid_to_numpy(py::dict& d) {
 }
 
 py::dict fit(const PyPair& pair, const PyModel& model, const py::object& velocity, const py::object& cor,
-             const py::object& cor_error, const py::object& data, const py::object& fit_names, const py::object& grid,
-             const py::kwargs& options) {
-  if (!data.is_none() && !(velocity.is_none() && cor.is_none() && cor_error.is_none())) {
-    throw InvalidArgument("data", py::str(data), "either data (a file) or velocity and cor (arrays), not both");
-  }
-  if (data.is_none() && (velocity.is_none() || cor.is_none())) {
-    throw InvalidArgument("velocity", "None", "arrays velocity and cor (or data, a CSV file)");
-  }
-  if (!data.is_none() && !py::isinstance<py::str>(data)) throw py::type_error("data: expected a file name (str)");
-  const analysis::Experiment experiment =
-      data.is_none() ? from_arrays(velocity, cor, cor_error) : from_file(data.cast<std::string>());
+             const py::object& cor_error, const py::object& data, const py::object& columns, const py::object& fit_names,
+             const py::object& grid, const py::kwargs& options) {
+  const analysis::Experiment experiment = experiment_from(velocity, cor, cor_error, data, columns);
   api::Inputs in = case_inputs(pair, model, options);
   in["chi2_grid"] = true;
   if (!fit_names.is_none()) in["fit"] = fit_text(fit_names);
@@ -118,7 +146,8 @@ py::dict fit(const PyPair& pair, const PyModel& model, const py::object& velocit
   Record out;
   {
     py::gil_scoped_release release;
-    out = api::fit(in, experiment);
+    // Ctrl-C stops the fit within a collision (~ms), as it stops curve().
+    out = api::fit(in, experiment, [](std::size_t, std::size_t) { check_signals_without_gil(); });
   }
   check_signals();
   py::dict d = to_python(out);
@@ -130,10 +159,12 @@ py::dict fit(const PyPair& pair, const PyModel& model, const py::object& velocit
 
 void bind_fit(py::module_& m) {
   m.def("fit", &fit, py::arg("pair"), py::arg("model"), py::arg("velocity") = py::none(), py::arg("cor") = py::none(),
-        py::kw_only(), py::arg("cor_error") = py::none(), py::arg("data") = py::none(), py::arg("fit") = py::none(),
+        py::kw_only(), py::arg("cor_error") = py::none(), py::arg("data") = py::none(), py::arg("columns") = py::none(),
+        py::arg("fit") = py::none(),
         py::arg("grid") = py::none(),
         "The model fitted to a measured restitution curve (K13 §4, docs/fitting.md): arrays velocity [m/s] and cor "
-        "(cor = 0: the grains stuck), optionally cor_error, or data='file.csv'. fit: the parameters to fit (default "
+        "(cor = 0: the grains stuck), optionally cor_error, or data='file.csv' (columns={'velocity': 'Speed', ...}: the "
+        "file's names of the columns, as --columns). fit: the parameters to fit (default "
         "the model's; krijt: gamma, tvis, yield), grid: {name: (lo, hi, n)} in SI units (log-spaced). Keywords of "
         "`bounce fit`: compare, threads, precision, grid_only, timing. A dict with the CLI's JSON keys (best, chi2, "
         "ranges, profiles, points, curve, comparison, ...) plus chi2_grid, a numpy array over the axes grid_values "

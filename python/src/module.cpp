@@ -47,4 +47,5 @@ PYBIND11_MODULE(_bounce, m) {
   python::bind_tables(m);
   python::bind_rules(m);
   python::bind_fit(m);
+  python::bind_posterior(m);
 }

@@ -93,7 +93,9 @@ CollisionOutcome oblique_force_law(const Pair& pair, const models::Model& model,
   }
   if (options.record_trajectory) {
     o.record_trajectory = true;
-    out.trajectory = dynamics::integrate_normal_collision(*model.force_law(), pair.effective_mass(), velocity, o).trajectory;
+    auto normal = dynamics::integrate_normal_collision(*model.force_law(), pair.effective_mass(), velocity, o);
+    out.trajectory = std::move(normal.trajectory);
+    out.trajectory_thinning = normal.trajectory_thinning;
   }
   return out;
 }
@@ -233,6 +235,18 @@ void bound_passive_cor(CollisionOutcome& out, double tolerance) {
   out.energy.close();
 }
 
+// A trajectory has at most dynamics::max_trajectory_rows rows (docs/cli.md, "Memory"): the
+// engines thin a long one as they go, and one joined from two contact episodes here; a note
+// says where it was thinned.
+void bound_trajectory(CollisionOutcome& out) {
+  dynamics::limit_trajectory(out.trajectory, out.trajectory_thinning);
+  if (out.trajectory_thinning > 0.0) {
+    out.notes.push_back(fmt::format("the trajectory reached the bound of {} rows and was thinned in time: its {} rows "
+                                    "are at least {:.3g} s apart (the first and last kept)",
+                                    dynamics::max_trajectory_rows, out.trajectory.size(), out.trajectory_thinning));
+  }
+}
+
 }  // namespace
 
 Method parse_method(std::string_view text) {
@@ -308,6 +322,7 @@ CollisionOutcome collide(const Pair& pair, const models::Model& model, double ve
   CollisionOutcome out = force_law ? force_law_collision(pair, model, velocity, options)
                                    : contact_collision(pair, model, velocity, options);
   bound_passive_cor(out, force_law ? options.integration.relative_tolerance : options.adhesive_tolerance);
+  bound_trajectory(out);
   if (model.yield_strength) add_plastic_losses(out, pair, velocity, *model.yield_strength);
   detail::add_warnings(out, pair, model, velocity);
   return out;

@@ -18,6 +18,14 @@ std::vector<dynamics::CollisionOutcome> collide_curve(const Pair& pair, const mo
   return out;
 }
 
+OutcomeBoundary outcome_boundary(const Pair& pair, const models::Model& model, double lo, double hi,
+                                 dynamics::Outcome below, dynamics::Outcome above, const CollideOptions& options,
+                                 double relative_width) {
+  const auto bracket = detail::bisect_speed(
+      lo, hi, [&](double v) { return collide(pair, model, v, options).outcome == below; }, relative_width);
+  return {std::sqrt(bracket.first * bracket.second), below, above};
+}
+
 std::vector<OutcomeBoundary> outcome_boundaries(const Pair& pair, const models::Model& model,
                                                 const std::vector<double>& velocities,
                                                 const std::vector<dynamics::CollisionOutcome>& outcomes,
@@ -26,10 +34,7 @@ std::vector<OutcomeBoundary> outcome_boundaries(const Pair& pair, const models::
   for (std::size_t i = 0; i + 1 < velocities.size(); ++i) {
     const dynamics::Outcome below = outcomes[i].outcome, above = outcomes[i + 1].outcome;
     if (below == above) continue;
-    const auto [lo, hi] = detail::bisect_speed(
-        velocities[i], velocities[i + 1],
-        [&](double v) { return collide(pair, model, v, options).outcome == below; }, relative_width);
-    out.push_back({std::sqrt(lo * hi), below, above});
+    out.push_back(outcome_boundary(pair, model, velocities[i], velocities[i + 1], below, above, options, relative_width));
   }
   return out;
 }

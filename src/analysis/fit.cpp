@@ -124,17 +124,8 @@ GridPoint integrate_point(const FitProblem& p, const Evaluator& ev, std::size_t 
 std::vector<GridPoint> integrate_grid(const FitProblem& p, const Evaluator& ev) {
   const std::size_t n = product(p.collision_axes);
   std::vector<GridPoint> points(n);
-  std::mutex progress_mutex;
-  std::size_t done = 0;
-  const std::size_t total = n * ev.speeds().size();
-  detail::parallel_for(n, p.threads, [&](std::size_t i, unsigned) {
-    points[i] = integrate_point(p, ev, i, 1);
-    if (p.progress) {
-      const std::lock_guard lock(progress_mutex);
-      done += ev.speeds().size();
-      p.progress(done, total);
-    }
-  });
+  ev.set_progress_total(n * ev.speeds().size());
+  detail::parallel_for(n, p.threads, [&](std::size_t i, unsigned) { points[i] = integrate_point(p, ev, i, 1); });
   return points;
 }
 
@@ -247,17 +238,6 @@ std::vector<ParameterRange> ranges(const Evaluator& ev, const std::vector<Profil
   return out;
 }
 
-void warn_about_edges(FitResult& r, const FitMinimum& best, const std::vector<Profile>& prof) {
-  for (std::size_t a = 0; a < prof.size(); ++a) {
-    const auto& v = prof[a].values;
-    if (v.size() > 1 && (best.values[a] <= v.front() || best.values[a] >= v.back())) {
-      r.warnings.push_back(fmt::format("the best {} lies on the edge of its grid ({:.4g} .. {:.4g}): a limit, not a "
-                                       "value; widen the grid to locate it",
-                                       r.names[a], v.front(), v.back()));
-    }
-  }
-}
-
 // The fit from the grid's points (the rest of K13 §4.1 and the refinements).
 FitResult finish(const FitProblem& p, const Evaluator& ev, std::vector<GridPoint> points, FitResult r) {
   for (const FitAxis& a : p.collision_axes) r.names.push_back(a.name);
@@ -282,6 +262,7 @@ FitResult finish(const FitProblem& p, const Evaluator& ev, std::vector<GridPoint
   r.grid_best = grid_minimum(p, g.chi2);
 
   const auto refine_start = std::chrono::steady_clock::now();
+  ev.set_progress_total(0);  // the refinement and the ranges: collisions counted, no total
   const std::size_t before = ev.collisions();
   r.best = p.refine ? detail::refine(ev, r.grid_best, false, r.cor) : r.grid_best;
   if (!p.refine || r.cor.empty()) {
@@ -303,12 +284,7 @@ FitResult finish(const FitProblem& p, const Evaluator& ev, std::vector<GridPoint
   r.refine_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - refine_start).count();
   r.collisions = r.grid_collisions + (ev.collisions() - before);
   if (p.keep_grid) r.chi2_grid = std::move(g.chi2);
-  warn_about_edges(r, r.best, r.profiles);
-  if (p.data.points.size() == r.names.size()) {
-    r.warnings.push_back(fmt::format("{} measurements for {} parameters: the fit passes through every point and "
-                                     "says nothing of the model",
-                                     p.data.points.size(), r.names.size()));
-  }
+  detail::check_result(p, r);
   return r;
 }
 

@@ -2,6 +2,7 @@
 // residuals K13 (31) sums.
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/core/parameters.hpp"
+#include "csv_format.hpp"
 
 namespace bounce::analysis {
 
@@ -34,22 +36,27 @@ std::string_view trim(std::string_view s) {
   return s.substr(first, last - first + 1);
 }
 
-std::vector<std::string_view> split_fields(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = line.find(',', start);
-    out.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
-    if (comma == std::string_view::npos) return out;
-    start = comma + 1;
-  }
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+std::string delimiter_name(char delimiter) {
+  return delimiter == '\t' ? "tab" : delimiter == ';' ? "semicolon" : "comma";
 }
 
 std::string shown(std::string_view value) { return value.empty() ? "\"\"" : std::string(value); }
 
+// The file's name of each of our columns: ours unless --columns maps it.
+std::string file_name(const ColumnNames& names, std::string_view column) {
+  const auto it = names.find(std::string(column));
+  return it == names.end() ? std::string(column) : detail::read_header_name(it->second).name;
+}
+
 class Reader {
  public:
-  explicit Reader(std::string_view source) : source_(source) {}
+  Reader(std::string_view source, const ColumnNames& names) : source_(source), names_(names) {}
 
   [[noreturn]] void refuse(std::size_t line, std::string_view field, std::string_view value,
                            const std::string& allowed) const {
@@ -59,40 +66,48 @@ class Reader {
   }
 
   void header(std::size_t line, std::string_view text) {
-    const auto names = split_fields(text);
+    delimiter_ = detail::sniff_delimiter(text);
+    const auto cells = fields(line, text);
     index_.fill(-1);
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      const auto it = std::find(columns.begin(), columns.end(), names[i]);
-      if (it == columns.end()) {
-        refuse(line, "header", names[i], "columns named velocity, cor and optionally cor_error, outcome");
-      }
-      int& slot = index_[static_cast<std::size_t>(it - columns.begin())];
-      if (slot >= 0) refuse(line, "header", names[i], "each column once");
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const detail::HeaderName h = detail::read_header_name(cells[i]);
+      const std::size_t column = column_of(line, cells[i], h.name);
+      int& slot = index_[column];
+      if (slot >= 0) refuse(line, "header", cells[i], "each column once");
       slot = static_cast<int>(i);
+      const auto factor = detail::unit_factor(columns[column], h.unit);
+      if (!factor) {
+        refuse(line, "header", cells[i],
+               column == 0 ? "a speed in m/s, cm/s or mm/s (velocity [m/s]; no unit: m/s)"
+                           : "no unit (a ratio: [-], [1] or none)");
+      }
+      if (column == 0) velocity_factor_ = *factor;
     }
     if (index_[0] < 0 || index_[1] < 0) {
-      refuse(line, "header", text, "a header line naming at least the columns velocity and cor");
+      refuse(line, "header", text,
+             fmt::format("a header line naming at least the columns {} and {}", file_name(names_, "velocity"),
+                         file_name(names_, "cor")));
     }
-    width_ = names.size();
+    width_ = cells.size();
   }
 
   Measurement row(std::size_t line, std::string_view text) const {
-    const auto fields = split_fields(text);
+    const auto fields = this->fields(line, text);
     if (fields.size() != width_) {
-      refuse(line, "", text, fmt::format("{} comma-separated fields, as in the header", width_));
+      refuse(line, "", text, fmt::format("{} {}-separated fields, as in the header", width_, delimiter_name(delimiter_)));
     }
-    auto field = [&](std::size_t column) { return fields[static_cast<std::size_t>(index_[column])]; };
+    auto field = [&](std::size_t column) -> const std::string& { return fields[static_cast<std::size_t>(index_[column])]; };
     auto number = [&](std::size_t column) {
-      const std::string_view v = field(column);
+      const std::string& v = field(column);
       try {
-        return parse_real(columns[column], v);
+        return parse_real(columns[column], detail::decimal_point(v, delimiter_));
       } catch (const InvalidArgument&) {
         refuse(line, columns[column], v, "a number");
       }
     };
     Measurement m;
     m.line = line;
-    m.velocity = number(0);
+    m.velocity = number(0) * velocity_factor_;
     if (!(m.velocity > 0.0) || !std::isfinite(m.velocity)) {
       refuse(line, "velocity", field(0), "an impact speed > 0 m/s and finite");
     }
@@ -112,7 +127,7 @@ class Reader {
       }
     }
     if (index_[3] >= 0) {
-      const std::string_view outcome = field(3);
+      const std::string outcome = lower(field(3));
       if (outcome == "stick") {
         if (m.cor != 0.0) refuse(line, "outcome", outcome, "stick only with cor = 0 (the grains did not separate)");
         m.stuck = true;
@@ -126,7 +141,31 @@ class Reader {
   }
 
  private:
+  std::vector<std::string> fields(std::size_t line, std::string_view text) const {
+    auto cells = detail::split_fields(text, delimiter_);
+    if (!cells) refuse(line, "", text, "a closing double quote for each opening one");
+    return std::move(*cells);
+  }
+
+  // Which of our columns a header cell names (`name`: in lower case, without its unit).
+  std::size_t column_of(std::size_t line, std::string_view cell, std::string_view name) const {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (name == file_name(names_, columns[c])) return c;
+    }
+    if (!names_.empty()) {
+      refuse(line, "header", cell,
+             fmt::format("columns named {}, {} and optionally {}, {} (with --columns)", file_name(names_, "velocity"),
+                         file_name(names_, "cor"), file_name(names_, "cor_error"), file_name(names_, "outcome")));
+    }
+    refuse(line, "header", cell,
+           "columns named velocity, cor and optionally cor_error, outcome (any case, a unit in brackets as in "
+           "velocity [m/s]; --columns velocity=NAME,cor=NAME maps other names)");
+  }
+
   std::string_view source_;
+  ColumnNames names_;
+  char delimiter_ = ',';
+  double velocity_factor_ = 1.0;
   std::array<int, columns.size()> index_{};
   std::size_t width_ = 0;
 };
@@ -138,10 +177,31 @@ bool Experiment::has_errors() const {
          std::all_of(points.begin(), points.end(), [](const Measurement& m) { return m.cor_error.has_value(); });
 }
 
-Experiment parse_experiment(std::string_view text, std::string_view source) {
+ColumnNames parse_column_names(std::string_view text) {
+  const std::string allowed =
+      "OURS=NAME pairs separated by commas, OURS one of velocity, cor, cor_error, outcome (each once), NAME the "
+      "file's header name";
+  ColumnNames names;
+  const auto pairs = detail::split_fields(text, ',');
+  if (!pairs) throw InvalidArgument("columns", shown(text), allowed);
+  for (const std::string& pair : *pairs) {
+    const auto eq = pair.find('=');
+    if (eq == std::string::npos) throw InvalidArgument("columns", shown(text), allowed);
+    const std::string ours = lower(trim(std::string_view(pair).substr(0, eq)));
+    const std::string theirs(trim(std::string_view(pair).substr(eq + 1)));
+    const bool known = std::find(columns.begin(), columns.end(), ours) != columns.end();
+    if (!known || theirs.empty() || !names.emplace(ours, theirs).second) {
+      throw InvalidArgument("columns", shown(text), allowed);
+    }
+  }
+  return names;
+}
+
+Experiment parse_experiment(std::string_view text, std::string_view source, const ColumnNames& names) {
   Experiment e;
   e.source = std::string(source);
-  Reader reader(source);
+  text = detail::strip_byte_order_mark(text, source);
+  Reader reader(source, names);
   bool header = false;
   std::size_t line = 0, start = 0;
   while (start <= text.size()) {

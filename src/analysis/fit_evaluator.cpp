@@ -51,6 +51,7 @@ std::optional<std::vector<double>> Evaluator::adhesive(std::span<const double> v
     }
     collision_nanoseconds_ += nanoseconds_since(start);
     ++collisions_;
+    report_collision();  // may throw (an interrupted fit): parallel_for stops and rethrows it
   });
   for (const std::string& f : failures) {
     if (!f.empty()) {
@@ -59,6 +60,17 @@ std::optional<std::vector<double>> Evaluator::adhesive(std::span<const double> v
     }
   }
   return e_a;
+}
+
+void Evaluator::set_progress_total(std::size_t total) const {
+  const std::lock_guard lock(progress_mutex_);
+  progress_total_ = total;
+}
+
+void Evaluator::report_collision() const {
+  if (!problem_.progress) return;
+  const std::lock_guard lock(progress_mutex_);
+  problem_.progress(collisions_.load(), progress_total_);
 }
 
 std::vector<double> Evaluator::plastic_cors(const PlasticScales& s, std::optional<double> yield) const {

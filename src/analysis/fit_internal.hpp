@@ -2,6 +2,7 @@
 // Private: what the grid (fit.cpp) and the refinement (fit_refine.cpp) share.
 
 #include <atomic>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -40,6 +41,11 @@ class Evaluator {
   /// K13 (31) or, weighted, the proper chi^2 of model values.
   double objective(std::span<const double> cor, bool weighted) const;
 
+  /// From now on each collision is reported to problem().progress as (collisions so far,
+  /// `total`): the grid's count on the grid, 0 after it (the refinement and the ranges, whose
+  /// number of collisions is not known in advance).
+  void set_progress_total(std::size_t total) const;
+
   /// Collisions integrated so far.
   std::size_t collisions() const { return collisions_; }
   double collision_seconds() const { return static_cast<double>(collision_nanoseconds_.load()) * 1e-9; }
@@ -48,7 +54,10 @@ class Evaluator {
   const FitProblem& problem_;
   std::vector<double> speeds_;
   std::vector<std::size_t> speed_of_point_;
+  void report_collision() const;
   mutable std::atomic<std::size_t> collisions_{0};
+  mutable std::mutex progress_mutex_;
+  mutable std::size_t progress_total_ = 0;
   mutable std::atomic<long long> collision_nanoseconds_{0};
 };
 
@@ -67,5 +76,11 @@ FitMinimum refine(const Evaluator& evaluator, const FitMinimum& start, bool weig
 /// crossing; an end is none where the region reaches the grid's edge.
 ParameterRange refined_range(const Evaluator& evaluator, const FitMinimum& best, std::size_t axis, double threshold,
                              bool weighted);
+
+/// What the result says about itself (fit_checks.cpp): a best value on the edge of its grid
+/// (within the refinement's precision: the optimiser stops that close to a bound it presses
+/// on), a parameter whose range spans the whole grid, a yield strength the data do not reach
+/// (FitResult::yield_lower_limit), as many parameters as points.
+void check_result(const FitProblem& problem, FitResult& result);
 
 }  // namespace bounce::analysis::detail

@@ -50,6 +50,10 @@ PiecewiseCubic curve_from_json(const nlohmann::json& nodes) {
   for (const auto& n : nodes) {
     c.x.push_back(detail::finite_field(n.at(0), "node x"));
     c.f.push_back(detail::finite_field(n.at(1), "node cor"));
+    if (!(c.f.back() >= 0.0 && c.f.back() <= 1.0)) {  // an edited table: no collision gives it
+      throw InvalidArgument("table", fmt::format("node cor = {}", n.at(1).dump()),
+                            "a coefficient of restitution 0 <= cor <= 1 at every node (a table written by bounce table)");
+    }
     c.slope.push_back(detail::finite_field(n.at(2), "node slope"));
     c.label.push_back(static_cast<double>(detail::integer_field(n.at(3), "node outcome", 0, 1)));
     if (c.x.size() > 1 && !(c.x.back() > c.x[c.x.size() - 2])) {
@@ -85,16 +89,26 @@ double PiecewiseCubic::operator()(double at) const {
 
 // --- eps^N ---------------------------------------------------------------------------
 
-double NormalTable::cor(double g) const {
+namespace {
+
+void require_in_range(double g, double g_min, double g_max) {
   require_finite("velocity", g);
   if (g < g_min * (1 - 1e-12) || g > g_max * (1 + 1e-12)) {
     throw InvalidArgument("velocity", fmt::format("{:g}", g), fmt::format("{:g} <= g <= {:g} m/s (the table's range)", g_min, g_max));
   }
+}
+
+}  // namespace
+
+double NormalTable::cor(double g) const {
+  require_in_range(g, g_min, g_max);
   const nt_table t = view(*this);
   return nt_cor(&t, g);
 }
 
+// Outside the table's range neither is known: refused as cor() (the C header's -1).
 dynamics::Outcome NormalTable::outcome(double g) const {
+  require_in_range(g, g_min, g_max);
   const nt_table t = view(*this);
   return nt_sticks(&t, g) ? dynamics::Outcome::stick : dynamics::Outcome::bounce;
 }
@@ -172,7 +186,8 @@ NormalTable NormalTable::from_json(const std::string& text) {
     t.curve = curve_from_json(j.at("nodes"));
     return t;
   } catch (const nlohmann::json::exception& e) {
-    throw InvalidArgument("table", "(malformed)", fmt::format("a table written by bounce table ({})", e.what()));
+    throw InvalidArgument("table", "(malformed)",
+                          fmt::format("a table written by bounce table (this one is {})", json_error_words(e.id, e.what())));
   }
 }
 

@@ -74,9 +74,11 @@ static double nt_curve_at(const nt_curve *c, double at) {
   return nt_in_piece(c, nt_label_at(c, at), at);
 }
 
-/* 1 if grains meeting at g [m/s] stick. */
+/* 1 if grains meeting at g [m/s] stick, 0 if they bounce; -1 outside [g_min, g_max], where
+   the table knows nothing (as nt_cor's NaN: never an extrapolated outcome). */
 static int nt_sticks(const nt_table *t, double g) {
   double offset, x;
+  if (!(g >= t->g_min * (1 - 1e-12) && g <= t->g_max * (1 + 1e-12))) return -1;
   if (t->sticking_velocity > 0 && g <= t->sticking_velocity) return 1;
   offset = t->sticking_velocity > 0 ? g - t->sticking_velocity : g;
   x = log(offset);

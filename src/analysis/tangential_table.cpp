@@ -101,7 +101,8 @@ TangentialTable TangentialTable::from_json(const std::string& text) {
     t.rows = j.at("rows").get<std::vector<double>>();
     t.nodes = j.at("nodes").get<std::vector<double>>();
   } catch (const nlohmann::json::exception& e) {
-    throw InvalidArgument("table", "(malformed)", fmt::format("a table written by bounce table ({})", e.what()));
+    throw InvalidArgument("table", "(malformed)",
+                          fmt::format("a table written by bounce table (this one is {})", json_error_words(e.id, e.what())));
   }
   const std::size_t n = t.s.size(), r = t.row_count();
   const bool shape = n >= 2 && t.s.front() == 0.0 && t.s.back() == 1.0 && std::is_sorted(t.s.begin(), t.s.end()) &&

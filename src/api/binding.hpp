@@ -26,6 +26,19 @@ Bound bind_inputs(const CommandSpec& command, const Inputs& inputs);
 /// checked in between, before the pair and the model are built).
 Case make_case(const Bound& bound, std::optional<double> radius = std::nullopt);
 
+/// The N values of "LO:HI:N" (geometric with `log`), each computed when asked for: a sweep of
+/// 1e7 points holds three numbers (docs/cli.md, "Memory").
+struct Points {
+  double lo = 0.0, hi = 0.0;
+  std::size_t n = 0;
+  bool log = false;
+  std::size_t size() const { return n; }
+  double front() const { return lo; }
+  double back() const { return hi; }
+  double operator[](std::size_t i) const;
+};
+/// "LO:HI:N" read (N written as a whole number, 1000 or 1e3); errors name `name`.
+Points parse_points(const std::string& name, const std::string& text, bool log);
 /// "LO:HI:N" as N values (geometric with `log`); errors name `name`.
 std::vector<double> parse_range(const std::string& name, const std::string& text, bool log);
 /// "LO:HI" with 0 < LO < HI; errors name `name`.

@@ -76,8 +76,8 @@ namespace {
 
 struct Sweep {
   bool by_radius = false;
-  std::vector<double> values;  // speeds, or radii at one speed
-  double velocity = 0.0;       // the speed of a sweep over radii
+  detail::Points values;   // speeds, or radii at one speed
+  double velocity = 0.0;  // the speed of a sweep over radii
 };
 
 Sweep sweep_of(const Parameters& own) {
@@ -89,17 +89,35 @@ Sweep sweep_of(const Parameters& own) {
   }
   const bool log = own.flag("log");
   if (s.by_radius) {
-    s.values = detail::parse_range("radii", own.text("radii"), log);
+    s.values = detail::parse_points("radii", own.text("radii"), log);
     if (s.values.front() <= 0.0) throw InvalidArgument("radii", own.text("radii"), "radii > 0 m (LO > 0)");
     s.velocity = own.require_real("velocity", "an impact velocity > 0 m/s with radii");
   } else {
     own.refuse_given(std::array{"velocity"}, "radii with it (a sweep over velocities has no fixed velocity)");
-    s.values = detail::parse_range("velocities", own.text("velocities"), log);
+    s.values = detail::parse_points("velocities", own.text("velocities"), log);
     if (s.values.front() <= 0.0) {
       throw InvalidArgument("velocities", own.text("velocities"), "velocities > 0 m/s (LO > 0)");
     }
   }
   return s;
+}
+
+// Every point's pair and speed checked before the first collision: a stream cannot take back
+// the rows it wrote, so a bad point is refused (exit 2) before any (a speed of the sweep named
+// as the option the user typed).
+void check_sweep(const detail::Bound& bound, const Sweep& s, const Case& first) {
+  for (std::size_t i = 0; i < s.values.size(); ++i) {
+    if (s.by_radius) {
+      analysis::require_impact_velocity(detail::make_case(bound, s.values[i]).pair, s.velocity);
+      continue;
+    }
+    try {
+      analysis::require_impact_velocity(first.pair, s.values[i]);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("velocities", bound.own.text("velocities"),
+                            fmt::format("speeds that are all valid: {} fails, expected {}", e.value(), e.allowed()));
+    }
+  }
 }
 
 Record curve_point(const dynamics::CollisionOutcome& o, const Sweep& s, std::size_t i, const Case& c,
@@ -115,9 +133,15 @@ Record curve_point(const dynamics::CollisionOutcome& o, const Sweep& s, std::siz
   return j;
 }
 
+// A change of outcome between neighbouring speeds of a sweep, before it is located.
+struct Change {
+  double lo, hi;
+  dynamics::Outcome below, above;
+};
+
 }  // namespace
 
-Record curve(const Inputs& inputs, const Progress& progress) {
+Record curve(const Inputs& inputs, const PointSink& sink, const Progress& progress, bool boundaries) {
   const detail::Bound bound = detail::bind_inputs(command("curve"), inputs);
   check_oblique(bound);
   const Sweep s = sweep_of(bound.own);
@@ -127,30 +151,34 @@ Record curve(const Inputs& inputs, const Progress& progress) {
     throw InvalidArgument("closed_forms", "true", "an adhesive model (the columns are K13 (24), (26), (27))");
   }
   const analysis::CollideOptions options = collide_options(first);
-  Value::List points;
-  std::vector<dynamics::CollisionOutcome> outcomes;
+  check_sweep(bound, s, first);
+  std::vector<Change> changes;  // as many as the outcome changes, not as the points
+  std::optional<dynamics::Outcome> last;
   for (std::size_t i = 0; i < s.values.size(); ++i) {
     const Case c = s.by_radius ? detail::make_case(bound, s.values[i]) : first;
-    try {
-      outcomes.push_back(analysis::collide(c.pair, c.model, s.by_radius ? s.velocity : s.values[i], options));
-    } catch (const InvalidArgument& e) {  // a speed of the sweep: named as the option the user typed
-      if (e.parameter() != "velocity" || s.by_radius) throw;
-      throw InvalidArgument("velocities", bound.own.text("velocities"),
-                            fmt::format("speeds that are all valid: {} fails, expected {}", e.value(), e.allowed()));
+    const auto outcome = analysis::collide(c.pair, c.model, s.by_radius ? s.velocity : s.values[i], options);
+    if (!s.by_radius && last && *last != outcome.outcome) {
+      changes.push_back({s.values[i - 1], s.values[i], *last, outcome.outcome});
     }
-    points.push_back(curve_point(outcomes.back(), s, i, c, closed));
+    last = outcome.outcome;
+    sink(curve_point(outcome, s, i, c, closed));
     if (progress) progress(i + 1, s.values.size());
   }
-  Value::List boundaries;
-  if (!s.by_radius) {
-    for (const auto& b : analysis::outcome_boundaries(first.pair, first.model, s.values, outcomes, options)) {
-      boundaries.push_back(Record()
-                               .set("velocity", b.velocity)
-                               .set("below", dynamics::to_string(b.below))
-                               .set("above", dynamics::to_string(b.above)));
-    }
+  Value::List found;
+  for (const Change& k : boundaries ? changes : std::vector<Change>{}) {
+    const auto b = analysis::outcome_boundary(first.pair, first.model, k.lo, k.hi, k.below, k.above, options);
+    found.push_back(Record()
+                        .set("velocity", b.velocity)
+                        .set("below", dynamics::to_string(b.below))
+                        .set("above", dynamics::to_string(b.above)));
   }
-  return Record().set("points", std::move(points)).set("boundaries", std::move(boundaries));
+  return Record().set("boundaries", std::move(found));
+}
+
+Record curve(const Inputs& inputs, const Progress& progress) {
+  Value::List points;
+  Record out = curve(inputs, [&points](const Record& point) { points.push_back(point); }, progress);
+  return out.set("points", std::move(points));
 }
 
 Table curve_table(const Record& curve) {

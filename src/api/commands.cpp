@@ -194,8 +194,8 @@ Bound bind_inputs(const CommandSpec& c, const Inputs& inputs) {
   return b;
 }
 
-std::vector<double> parse_range(const std::string& name, const std::string& text, bool log) {
-  static const std::regex pattern(R"(^([^:]+):([^:]+):([0-9]+)$)");
+Points parse_points(const std::string& name, const std::string& text, bool log) {
+  static const std::regex pattern(R"(^([^:]+):([^:]+):([^:]+)$)");
   constexpr long max_points = 10'000'000;
   const std::string allowed = "LO:HI:N with numbers LO <= HI and an integer N >= 1";
   std::smatch match;
@@ -207,28 +207,34 @@ std::vector<double> parse_range(const std::string& name, const std::string& text
     return v;
   };
   const double lo = number(match[1]), hi = number(match[2]);
-  long n = 0;
+  // N is a whole number however written (1000, 1e3, 1000.0); 1e3 is as much an integer as 1000.
   const std::string count = match[3];
+  double n = 0.0;
   const auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
-  if (ec != std::errc() || n > max_points) {
+  const bool read = ec == std::errc() && end == count.data() + count.size();
+  if (ec == std::errc::result_out_of_range || (read && n > static_cast<double>(max_points))) {
     throw InvalidArgument(name, text, fmt::format("LO:HI:N with at most N = {} points", max_points));
   }
-  if (n < 1 || lo > hi) throw InvalidArgument(name, text, allowed);
+  if (!read || n != std::floor(n) || n < 1 || lo > hi) throw InvalidArgument(name, text, allowed);
   if (n == 1 && lo != hi) throw InvalidArgument(name, text, "LO:HI:N with N >= 2 from LO to HI (one point: LO = HI)");
   if (log && lo <= 0.0) throw InvalidArgument(name, text, "LO > 0 with log");
-  std::vector<double> values(static_cast<std::size_t>(n), lo);
-  if (lo == hi) return values;  // N copies (exp(log 3) need not be 3: the fuzzer's 3:3:127)
-  const double span = hi - lo;
-  const bool finite = std::isfinite(span);
-  for (long i = 0; i < n; ++i) {
-    const double f = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
-    values[static_cast<std::size_t>(i)] =
-        log      ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo)))
-        : finite ? lo + f * span
-                 : (1.0 - f) * lo + f * hi;  // HI - LO overflows (-1e308:1e308); both forms are monotone in f
-  }
-  values.front() = lo;
-  values.back() = hi;
+  return Points{lo, hi, static_cast<std::size_t>(n), log};
+}
+
+double Points::operator[](std::size_t i) const {
+  if (lo == hi) return lo;  // N copies (exp(log 3) need not be 3: the fuzzer's 3:3:127)
+  if (i == 0) return lo;
+  if (i + 1 >= n) return hi;
+  const double f = static_cast<double>(i) / static_cast<double>(n - 1), span = hi - lo;
+  return log                  ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo)))
+         : std::isfinite(span) ? lo + f * span
+                               : (1.0 - f) * lo + f * hi;  // HI - LO overflows (-1e308:1e308); both forms are monotone in f
+}
+
+std::vector<double> parse_range(const std::string& name, const std::string& text, bool log) {
+  const Points points = parse_points(name, text, log);
+  std::vector<double> values(points.size());
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = points[i];
   return values;
 }
 

@@ -73,7 +73,7 @@ Record contact(const Inputs& inputs) {
   return out;
 }
 
-Table contact_curve(const Inputs& inputs) {
+void contact_curve(const Inputs& inputs, const std::function<void(const Table& row)>& sink) {
   const ContactCase c = make_contact_case(inputs);
   int given = 0;
   for (const char* name : ranges) given += c.own.given(name);
@@ -82,20 +82,33 @@ Table contact_curve(const Inputs& inputs) {
                           "one range: forces, overlaps or contact_radii LO:HI:N");
   }
   c.own.refuse_given(std::array{"force", "overlap"}, "no single state with a curve (one range only)");
-  const bool log = c.own.flag("log");
-  Table t;
-  t.columns = {"contact_radius", "overlap", "force"};
-  auto add = [&](const contact::ContactPoint& p) { t.rows.push_back({p.contact_radius, p.overlap, p.force}); };
   const char* range = c.own.given("forces") ? "forces" : c.own.given("overlaps") ? "overlaps" : "contact_radii";
-  for (double v : detail::parse_range(range, c.own.text(range), log)) {
+  const detail::Points values = detail::parse_points(range, c.own.text(range), c.own.flag("log"));
+  auto at = [&](double v) {
+    const std::string_view r = range;
     try {
-      const std::string_view r = range;
-      add(r == "forces" ? c.law->at_force(v) : r == "overlaps" ? c.law->at_overlap(v) : c.law->at_contact_radius(v));
+      return r == "forces" ? c.law->at_force(v) : r == "overlaps" ? c.law->at_overlap(v) : c.law->at_contact_radius(v);
     } catch (const InvalidArgument& e) {  // a point of the range, named as the option the user typed
       throw InvalidArgument(range, c.own.text(range),
                             fmt::format("values that are all valid: {} fails, expected {}", e.value(), e.allowed()));
     }
+  };
+  // Each point costs microseconds: all are computed once to check them (a stream cannot take
+  // back its rows, so a bad one is refused before any), then again as they are written.
+  for (std::size_t i = 0; i < values.size(); ++i) (void)at(values[i]);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const contact::ContactPoint p = at(values[i]);
+    Table row;
+    row.columns = {"contact_radius", "overlap", "force"};
+    row.rows.push_back({p.contact_radius, p.overlap, p.force});
+    sink(row);
   }
+}
+
+Table contact_curve(const Inputs& inputs) {
+  Table t;
+  t.columns = {"contact_radius", "overlap", "force"};
+  contact_curve(inputs, [&t](const Table& row) { t.rows.push_back(row.rows.front()); });
   return t;
 }
 

@@ -1,5 +1,6 @@
 // The manifest of a batch of fits (docs/fitting.md): a TOML file with optional [defaults] and
 // one [[experiment]] table per experiment, keys named as the command line's options.
+#include <charconv>
 #include <filesystem>
 #include <set>
 
@@ -15,25 +16,45 @@ namespace bounce::api {
 namespace {
 
 // A key's value as the front door takes it: text, a number, or a flag.
+// One rule for numbers in TOML, as in a materials file: a number is a TOML number, never a
+// string that reads as one (radius = "0.635e-6" is refused, radius = 0.635e-6 taken).
 ParameterValue value_of(const toml::node& node, const std::string& where) {
-  if (const auto* s = node.as_string()) return s->get();
+  if (const auto* s = node.as_string()) {
+    const std::string& text = s->get();
+    double x = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+    if (!text.empty() && ec == std::errc() && end == text.data() + text.size()) {
+      throw InvalidArgument(where, fmt::format("\"{}\"", text), fmt::format("a TOML number without quotes ({})", text));
+    }
+    return text;
+  }
   if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
   if (const auto* f = node.as_floating_point()) return f->get();
   if (const auto* b = node.as_boolean()) return b->get();
   throw InvalidArgument(where, "(a table or an array)", "a string, a number or true/false");
 }
 
-Inputs inputs_of(const toml::table& table, const std::string& where, std::string* name, std::string* data) {
+// The keys of the batch itself (not the fit's options): an experiment's name, its data file
+// and the file's column names (as --columns).
+struct OwnKeys {
+  std::string* name = nullptr;
+  std::string* data = nullptr;
+  std::string* columns = nullptr;
+};
+
+Inputs inputs_of(const toml::table& table, const std::string& where, const OwnKeys& own) {
   Inputs in;
   for (const auto& [key, node] : table) {
     const std::string k(key.str()), at = fmt::format("{}: {}", where, k);
-    if (k == "name" || k == "data") {
+    if (k == "name" || k == "data" || k == "columns") {
+      std::string* slot = k == "name" ? own.name : k == "data" ? own.data : own.columns;
       const auto* s = node.as_string();
-      if (s == nullptr || s->get().empty() || (k == "name" ? name : data) == nullptr) {
-        throw InvalidArgument(at, "(not a name)", k == "name" ? "a name for the experiment (in [[experiment]])"
-                                                              : "the data file's path (in [[experiment]])");
+      if (s == nullptr || s->get().empty() || slot == nullptr) {
+        throw InvalidArgument(at, "(not a name)", k == "name"   ? "a name for the experiment (in [[experiment]])"
+                                                  : k == "data" ? "the data file's path (in [[experiment]])"
+                                                                : "the file's column names, as --columns (in [[experiment]])");
       }
-      *(k == "name" ? name : data) = s->get();
+      *slot = s->get();
       continue;
     }
     in[k] = value_of(node, at);
@@ -41,8 +62,15 @@ Inputs inputs_of(const toml::table& table, const std::string& where, std::string
   return in;
 }
 
-analysis::Experiment read_data(const std::string& path, const std::string& where) {
-  return analysis::parse_experiment(read_text_file(where + ": data", path, "a readable CSV file (docs/fitting.md)"), path);
+analysis::Experiment read_data(const std::string& path, const std::string& where, const std::string& columns) {
+  analysis::ColumnNames names;
+  try {
+    if (!columns.empty()) names = analysis::parse_column_names(columns);
+  } catch (const InvalidArgument& e) {
+    throw e.renamed(where + ": columns");
+  }
+  return analysis::parse_experiment(read_text_file(where + ": data", path, "a readable CSV file (docs/fitting.md)"), path,
+                                    names);
 }
 
 }  // namespace
@@ -63,7 +91,7 @@ std::vector<BatchEntry> read_fit_manifest(std::string_view text, const std::stri
       throw InvalidArgument(fmt::format("{}: {}", source, key.str()), "(unknown top-level key)",
                             "a [defaults] table and [[experiment]] tables");
     }
-    defaults = inputs_of(*node.as_table(), fmt::format("{}: defaults", source), nullptr, nullptr);
+    defaults = inputs_of(*node.as_table(), fmt::format("{}: defaults", source), {});
   }
   const toml::array* experiments = root["experiment"].as_array();
   if (experiments == nullptr || experiments->empty()) {
@@ -76,15 +104,15 @@ std::vector<BatchEntry> read_fit_manifest(std::string_view text, const std::stri
     const toml::table* table = (*experiments)[i].as_table();
     if (table == nullptr) throw InvalidArgument(where, "(not a table)", "an [[experiment]] table");
     BatchEntry e;
-    std::string data;
+    std::string data, columns;
     e.inputs = defaults;
-    for (auto& [key, value] : inputs_of(*table, where, &e.name, &data)) e.inputs[key] = std::move(value);
+    for (auto& [key, value] : inputs_of(*table, where, {&e.name, &data, &columns})) e.inputs[key] = std::move(value);
     if (e.name.empty()) e.name = fmt::format("experiment {}", i + 1);
     if (!names.insert(e.name).second) throw InvalidArgument(where + ": name", e.name, "a name no other experiment has");
     if (data.empty()) throw InvalidArgument(where + ": data", "(not given)", "the data file's path");
     const std::filesystem::path given(data);
     const std::filesystem::path path = given.is_absolute() ? given : std::filesystem::path(directory) / given;
-    e.data = read_data(path.string(), where);
+    e.data = read_data(path.string(), where, columns);
     out.push_back(std::move(e));
   }
   return out;

@@ -32,4 +32,9 @@ Case trial_case(const Plan& plan, std::span<const double> values);
 /// "a,b,c" split at `separator`.
 std::vector<std::string> split(const std::string& text, char separator);
 
+/// The Record of a fit's result (fit_records.cpp): best (a yield strength the data do not
+/// determine as null, with lower_limits), ranges, profiles, points, statistics, scales, and
+/// with `timing` where the time went.
+Record fit_record(const Plan& plan, const analysis::Experiment& data, const analysis::FitResult& f, bool timing);
+
 }  // namespace bounce::api::detail

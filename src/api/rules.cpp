@@ -7,6 +7,7 @@
 
 #include "binding.hpp"
 #include "bounce/analysis/rules.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/pair/pair_parameters.hpp"
 
@@ -108,7 +109,7 @@ Value rules(const Inputs& inputs, std::string_view encounters) {
   try {
     in = nlohmann::json::parse(encounters);
   } catch (const nlohmann::json::exception& e) {  // parse errors, and numbers beyond double (1e400)
-    throw InvalidArgument("encounters", "(not JSON)", fmt::format("JSON ({})", e.what()));
+    throw InvalidArgument("encounters", "(not JSON)", fmt::format("JSON (this is {})", json_error_words(e.id, e.what())));
   }
   detail::Bound bound = detail::bind_inputs(command("rules"), inputs);
   Pair pair = bounce::make_pair(bound.pair);

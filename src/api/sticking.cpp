@@ -1,11 +1,13 @@
 // The front door's sticking velocity, alone or against the radius (K13 fig. 5, right),
 // beside its closed forms.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "binding.hpp"
 #include "bounce/analysis/sticking.hpp"
 #include "bounce/analytic/adhesive.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/models/registry.hpp"
 
 namespace bounce::api {
 
@@ -51,20 +53,33 @@ Record sticking_record(const Case& c) {
   return j;
 }
 
+// The default model cannot stick: with none named, that is said first (before the default's
+// own parameters, which the user never meant to give, are asked for).
+void require_model(const Inputs& inputs) {
+  if (inputs.count("model")) return;
+  const auto adhesive = models::model_registry().names_where([](const models::ModelRow& r) { return r.traits.adhesive; });
+  throw InvalidArgument("model", "(not given)",
+                        fmt::format("an adhesive model ({}): the default, {}, has no adhesion and never sticks",
+                                    fmt::join(adhesive, ", "), models::ModelRegistry::default_name()));
+}
+
 }  // namespace
 
 Record sticking(const Inputs& inputs, const Progress&) {
+  require_model(inputs);
   const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
   bound.own.refuse_given(std::array{"log"}, "radii with it (log spaces the radii)");
   bound.own.refuse_given(std::array{"radii"}, "none for one sticking velocity (sticking_over_radii)");
   return sticking_record(detail::make_case(bound));
 }
 
-Value sticking_over_radii(const Inputs& inputs, const Progress& progress) {
+void sticking_over_radii(const Inputs& inputs, const PointSink& sink, const Progress& progress) {
+  require_model(inputs);
   const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
-  const auto radii = detail::parse_range("radii", bound.own.text("radii"), bound.own.flag("log"));
+  const auto radii = detail::parse_points("radii", bound.own.text("radii"), bound.own.flag("log"));
   if (radii.front() <= 0.0) throw InvalidArgument("radii", bound.own.text("radii"), "radii > 0 m (LO > 0)");
-  Value::List rows;
+  // Every radius's case first: a stream cannot take back its rows, so a bad one is refused before.
+  for (std::size_t i = 0; i < radii.size(); ++i) (void)detail::make_case(bound, radii[i]);
   for (std::size_t i = 0; i < radii.size(); ++i) {
     const Case c = detail::make_case(bound, radii[i]);
     Record j;
@@ -76,9 +91,14 @@ Value sticking_over_radii(const Inputs& inputs, const Progress& progress) {
       j.set("note", e.what());
     }
     j.set("radius", radii[i]);
-    rows.push_back(std::move(j));
+    sink(j);
     if (progress) progress(i + 1, radii.size());
   }
+}
+
+Value sticking_over_radii(const Inputs& inputs, const Progress& progress) {
+  Value::List rows;
+  sticking_over_radii(inputs, [&rows](const Record& row) { rows.push_back(row); }, progress);
   return rows;
 }
 

@@ -85,3 +85,20 @@ std::string read_text_file(std::string_view parameter, const std::string& path, 
 }
 
 }  // namespace bounce
+
+namespace bounce {
+
+std::string json_error_words(int id, std::string_view what) {
+  if (id >= 100 && id < 200) {  // parse errors: "... at line 1, column 2: ..."
+    const auto at = what.find("line ");
+    const auto end = at == std::string_view::npos ? at : what.find(':', at);
+    if (at != std::string_view::npos && end != std::string_view::npos) {
+      return fmt::format("not JSON (a syntax error at {})", what.substr(at, end - at));
+    }
+    return "not JSON (a syntax error)";
+  }
+  if (id == 406) return "not JSON (a number beyond double precision)";
+  return "a field missing or of the wrong type";
+}
+
+}  // namespace bounce

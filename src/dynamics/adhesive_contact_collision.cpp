@@ -49,6 +49,7 @@ class AdhesiveContactCollision {
   const double delta_snap_, snap_release_, release_energy_, t_hertz_;
   const bool follow_;
   CollisionOutcome out_;
+  TrajectoryRecorder trajectory_{out_.trajectory, out_.trajectory_thinning};
 };
 
 AdhesiveContactCollision::AdhesiveContactCollision(const models::KrijtParameters& p,
@@ -133,12 +134,12 @@ detail::IntegrationResult<3> AdhesiveContactCollision::integrate() {
   const double spacing = 2.0 * t_hertz_ / std::max(options_.trajectory_points, 1);
   double next_sample = spacing;  // the start is sampled below
   const detail::StepObserver<3> observer = [&](double t0, double t1, const auto& at) {
-    for (; next_sample <= t1; next_sample += spacing) {
-      if (next_sample >= t0) out_.trajectory.push_back(sample(next_sample, at(next_sample)));
+    for (; next_sample <= t1; next_sample += trajectory_.step(spacing, s_.time)) {
+      if (next_sample >= t0) trajectory_.add(sample(next_sample, at(next_sample)));
     }
   };
   const State start{delta_snap_ / s_.length, 1.0, 0.0};
-  if (options_.record_trajectory) out_.trajectory.push_back(sample(0.0, start));
+  if (options_.record_trajectory) trajectory_.add(sample(0.0, start));
   if (!follow_ && kinetic_at_release(start) <= 0.0) {
     detail::IntegrationResult<3> bound;
     bound.terminal = {sticks, 0.0, start};  // bound from the snap-on on
@@ -205,14 +206,14 @@ void AdhesiveContactCollision::finish(const detail::IntegrationResult<3>& result
 // The trajectory's end: the state there on the branch and, after a release, the same time past
 // the jump off it (no contact, what it held released, the balance's rate).
 void AdhesiveContactCollision::record_end(double t, const State& end, bool bounced, double v) {
-  if (out_.trajectory.empty() || out_.trajectory.back().time < t * s_.time) out_.trajectory.push_back(sample(t, end));
+  if (out_.trajectory.empty() || out_.trajectory.back().time < t * s_.time) trajectory_.add_end(sample(t, end));
   if (!bounced) return;
   TrajectorySample off = out_.trajectory.back();
   off.rate = v * s_.speed;
   off.contact_radius = off.elastic_force = off.dissipative_force = off.elastic = off.surface = 0.0;
   off.kinetic = 0.5 * p_.effective_mass * off.rate * off.rate;
   off.crack_dissipated = out_.energy.crack_dissipated;
-  out_.trajectory.push_back(off);
+  trajectory_.add_end(off);
 }
 
 CollisionOutcome AdhesiveContactCollision::run() {

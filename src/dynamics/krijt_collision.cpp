@@ -89,6 +89,7 @@ class KrijtEpisode {
   double t_hertz_ = 0.0;  // K13 (22), scaled
   double time_limit_ = 0.0, spacing_ = 0.0, next_sample_ = 0.0;
   CollisionOutcome out_;
+  TrajectoryRecorder trajectory_{out_.trajectory, out_.trajectory_thinning};
   std::vector<double> y_;
   double t_ = 0.0;
   long steps_ = 0;
@@ -119,7 +120,7 @@ KrijtEpisode::KrijtEpisode(const models::KrijtParameters& p, double speed, const
   out_.method = "integrate";
   spacing_ = 2.0 * t_hertz_ / std::max(options.trajectory_points, 1);
   next_sample_ = t_;
-  if (options.record_trajectory) out_.trajectory.push_back(krijt_sample(p, s_, t_, y_));
+  if (options.record_trajectory) trajectory_.add(krijt_sample(p, s_, t_, y_));
   // Bound from the start: the formation already took more than the kinetic energy.
   stick_certain_ = system_.mechanical_energy(y_.data()) <= 0.0;
   ended_ = !following_ && stick_certain_;
@@ -143,13 +144,13 @@ std::vector<double> KrijtEpisode::state_at_time(const detail::StiffIntegrator& i
 
 void KrijtEpisode::record(const detail::StiffIntegrator& integrator, const detail::SwappedIndependent& swapped,
                           double t_before, const detail::StiffIntegrator::Step& step) {
-  for (; next_sample_ < t_; next_sample_ += spacing_) {
+  for (; next_sample_ < t_; next_sample_ += trajectory_.step(spacing_, s_.time)) {
     if (next_sample_ > t_before) {
-      out_.trajectory.push_back(
+      trajectory_.add(
           krijt_sample(p_, s_, next_sample_, state_at_time(integrator, swapped, next_sample_, step.t0, step.t1)));
     }
   }
-  out_.trajectory.push_back(krijt_sample(p_, s_, t_, y_));
+  trajectory_.add(krijt_sample(p_, s_, t_, y_));
 }
 
 void KrijtEpisode::on_event(int event, detail::StiffIntegrator& integrator, Phase& next) {
@@ -249,6 +250,9 @@ void KrijtEpisode::run_phase() {
 }
 
 Episode KrijtEpisode::finish() {
+  if (options_.record_trajectory && out_.trajectory.back().time < t_ * s_.time) {  // a thinned trajectory's end
+    trajectory_.add_end(krijt_sample(p_, s_, t_, y_));
+  }
   if (!compressed_ && out_.outcome == Outcome::stick) {  // stopped while still compressing
     out_.max_overlap = std::max(y_[0], 0.0) * s_.length;
     out_.time_of_max_overlap = t_ * s_.time;
@@ -287,6 +291,7 @@ void append_episode(CollisionOutcome& out, const CollisionOutcome& n, double shi
     sample.crack_dissipated += out.energy.crack_dissipated;
     out.trajectory.push_back(sample);
   }
+  out.trajectory_thinning = std::max(out.trajectory_thinning, n.trajectory_thinning);
   out.outcome = n.outcome;
   out.cor = n.cor * rate / speed;  // rebound speed relative to the first impact speed
   out.contact_time = shift + n.contact_time;

@@ -81,7 +81,7 @@ def test_plots_of_a_fit():
     ax = bounce.plot.fit_curve(r)
     assert len(ax.lines) >= 2
     ax = bounce.plot.chi2_map(r, "A", "yield")
-    assert ax.get_xlabel() == "A"
+    assert ax.get_xlabel() == "A [s]"  # with its unit (row 14 of reliability round 2)
     with pytest.raises(ValueError, match="gamma = \\(not fitted\\) is invalid"):
         bounce.plot.chi2_map(r, "gamma", "A")
 

@@ -323,6 +323,8 @@ def interrupt_latency(call):
     ("curve over 1e5 speeds", lambda: bounce.curve(ice(), krijt(), np.geomspace(5.0, 50.0, 100_000))),
     ("a table to 1e-9", lambda: bounce.NormalTable.build(ice(), krijt(), 0.5, 200.0, bound=1e-9)),
     ("maugis over 1e6 forces", lambda: bounce.ContactLaw(ice(), "maugis", z0=3e-10).at_force(np.full(10**6, 1e-7))),
+    ("a posterior of K13's model", lambda: bounce.posterior(ice(), bounce.Model("krijt"), np.geomspace(1.0, 10.0, 30),
+                                                            np.full(30, 0.5), steps=100_000)),
 ])
 def test_ctrl_c_interrupts_a_long_call(what, call):
     assert interrupt_latency(call) < LATENCY, what

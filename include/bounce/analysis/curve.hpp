@@ -25,6 +25,12 @@ struct OutcomeBoundary {
   dynamics::Outcome above = dynamics::Outcome::bounce;
 };
 
+/// The change of outcome between speeds lo < hi (outcome `below` at lo, `above` at hi),
+/// located by bisection to a relative width `relative_width`.
+OutcomeBoundary outcome_boundary(const Pair& pair, const models::Model& model, double lo, double hi,
+                                 dynamics::Outcome below, dynamics::Outcome above, const CollideOptions& options = {},
+                                 double relative_width = 1e-6);
+
 /// Every change of outcome between neighbours of `velocities` (with their `outcomes`),
 /// located by bisection to a relative width `relative_width`.
 std::vector<OutcomeBoundary> outcome_boundaries(const Pair& pair, const models::Model& model,

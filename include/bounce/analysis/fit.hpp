@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -45,10 +46,20 @@ struct Experiment {
   bool has_errors() const;
 };
 
+/// The file's header name of each of our columns that it names otherwise (`--columns
+/// velocity=Speed,cor=e`): ours (velocity, cor, cor_error, outcome) -> the file's.
+using ColumnNames = std::map<std::string, std::string>;
+/// `--columns` read: OURS=NAME pairs separated by commas (InvalidArgument "columns" otherwise).
+ColumnNames parse_column_names(std::string_view text);
+
 /// The CSV of docs/fitting.md: a header naming `velocity`, `cor` and optionally `cor_error`
-/// and `outcome` (bounce | stick); `#` starts a comment; blank lines are skipped. A malformed
-/// file is an InvalidArgument naming `source:LINE`, the value and what is allowed.
-Experiment parse_experiment(std::string_view text, std::string_view source);
+/// and `outcome` (bounce | stick), or the names `names` maps them to; `#` starts a comment;
+/// blank lines are skipped. Real files' forms are read (docs/fitting.md, "The data"): a UTF-8
+/// byte-order mark, a tab or semicolon delimiter (sniffed from the header), quoted fields,
+/// names in any case with a unit in brackets (velocity in m/s, cm/s or mm/s), a decimal comma
+/// where the delimiter is not the comma. A malformed file is an InvalidArgument naming
+/// `source:LINE`, the value and what is allowed.
+Experiment parse_experiment(std::string_view text, std::string_view source, const ColumnNames& names = {});
 
 /// K13 (31): the mean squared residual of model values `cor` against the data.
 double mean_squared_residual(const Experiment& data, std::span<const double> cor);
@@ -73,7 +84,9 @@ struct FitCase {
 /// several threads at once.
 using CaseAt = std::function<FitCase(std::span<const double> values)>;
 
-/// Called with (done, total) collisions as the grid goes (from one thread at a time).
+/// Called after each collision (from one thread at a time) with (done, total) collisions: the
+/// grid's total on the grid, 0 after it (the refinement and the ranges, whose number is not
+/// known in advance). It may throw to stop the fit (Python's Ctrl-C): the fit rethrows it.
 using FitProgress = std::function<void(std::size_t, std::size_t)>;
 
 struct FitProblem {
@@ -130,6 +143,11 @@ struct FitResult {
   std::size_t grid_collisions = 0;  ///< ... of which on the grid
   std::size_t failed_trials = 0;  ///< grid points whose collisions failed (NumericalError)
   std::vector<std::string> warnings;
+  /// Set when the data do not determine the yield strength: at the best fit every measured
+  /// speed lies below the yield velocity K13 (28), so chi^2 is the same for every Y at or above
+  /// this one (the Y whose yield velocity is the fastest speed). A lower limit, not a value:
+  /// best's (and weighted_best's) Y is set to it, and a warning says so.
+  std::optional<double> yield_lower_limit;
   /// Where the time went [s of wall-clock time]: the grid's collisions, its e_P table, its
   /// chi^2, the refinement; and the collisions' CPU time summed over threads.
   double collision_seconds = 0.0, plastic_seconds = 0.0, chi2_seconds = 0.0, refine_seconds = 0.0;

@@ -91,8 +91,15 @@ InvalidArgument as_typed(const InvalidArgument& e, const Inputs& inputs);
 
 // --- the commands: each returns the Record the CLI prints as JSON ----------------------
 Record collide(const Inputs& inputs);
+/// Takes the points (rows) of a long output one at a time, as they are computed: the CLI writes
+/// each at once, so that memory stays flat in the number of points (docs/cli.md, "Memory").
+using PointSink = std::function<void(const Record& point)>;
 /// {points, boundaries} of a sweep over velocities (or radii at one velocity).
 Record curve(const Inputs& inputs, const Progress& progress = {});
+/// The same with each point handed to `sink` as it is computed, none kept: {boundaries} (none
+/// located without `boundaries`). Every point's speed and pair are checked before the first
+/// collision, so a bad input is refused before `sink` is called.
+Record curve(const Inputs& inputs, const PointSink& sink, const Progress& progress, bool boundaries = true);
 /// The columns of a curve (the CLI's CSV, Python's arrays), from curve()'s Record.
 Table curve_table(const Record& curve);
 /// collide() over speeds as columns (velocity, cor, outcome, contact_time, max_overlap,
@@ -102,10 +109,15 @@ Record sticking(const Inputs& inputs, const Progress& progress = {});
 /// With radii: a list of sticking records, one per radius (a radius without a threshold has
 /// sticking_velocity null and the reason in "note").
 Value sticking_over_radii(const Inputs& inputs, const Progress& progress = {});
+/// The same with each record handed to `sink` as it is computed, none kept.
+void sticking_over_radii(const Inputs& inputs, const PointSink& sink, const Progress& progress);
 Table sticking_table(const Value& rows);
 Record contact(const Inputs& inputs);
 /// The contact law's curve over forces, overlaps or contact radii (one of them given).
 Table contact_curve(const Inputs& inputs);
+/// The same with each row handed to `sink` (a Table of that one row) as it is computed, after
+/// every point was checked (a bad one is refused before `sink` is called).
+void contact_curve(const Inputs& inputs, const std::function<void(const Table& row)>& sink);
 Record analytic(const Inputs& inputs);
 /// `encounters`: JSON text, one encounter object or a list of them (docs/cli.md).
 Value rules(const Inputs& inputs, std::string_view encounters);

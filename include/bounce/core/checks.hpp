@@ -42,6 +42,11 @@ std::string read_text_file(std::string_view parameter, const std::string& path, 
 /// "a, b, c": the names allowed, for a message.
 std::string one_of(const std::vector<std::string>& names);
 
+/// A JSON reader's error (nlohmann's exception id and what()) in our words: "not JSON (a syntax
+/// error at line 1, column 2)" for a parse error, "a field missing or of the wrong type" for
+/// the rest; never the library's own text.
+std::string json_error_words(int id, std::string_view what);
+
 /// The row of `rows` (anything with a `name`) called `name`; InvalidArgument(parameter, name,
 /// "one of …", with the likely name when `name` looks like a typo of one) when there is none.
 /// The registries' lookup (models, contact laws, commands).

@@ -2,6 +2,7 @@
 // What a collision produces: restitution, outcome, times, energy budget and,
 // on request, the trajectory. SI units.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -50,6 +51,41 @@ struct TrajectorySample {
   double crack_dissipated = 0.0;   ///< U_CD so far [J]
 };
 
+/// A trajectory has at most this many rows, whatever the collision's duration and the samples
+/// asked for (`--trajectory-points` samples per ~2 contact times, every step of krijt, a
+/// `--follow` time): memory stays bounded (docs/cli.md, "Memory"). Beyond it the rows are
+/// thinned in time (TrajectoryRecorder), the first and the last kept.
+inline constexpr std::size_t max_trajectory_rows = 200000;
+
+/// Collects an engine's trajectory samples into `rows`, at most max_trajectory_rows of them.
+/// Until the bound every sample is kept. At the bound the rows are thinned: a least spacing in
+/// time between rows (doubled until at most half the rows remain; the first row kept), and from
+/// then on a sample closer than it to the last row is dropped. An engine sampling on a grid in
+/// time steps it by spacing(), so that a long run (a `--follow` time of hours) costs samples in
+/// proportion to the bound, not to its duration.
+class TrajectoryRecorder {
+ public:
+  /// `thinning`: where the least spacing is reported (CollisionOutcome::trajectory_thinning).
+  TrajectoryRecorder(std::vector<TrajectorySample>& rows, double& thinning, std::size_t max_rows = max_trajectory_rows);
+  /// A sample, dropped if closer than the least spacing to the last row.
+  void add(const TrajectorySample& sample);
+  /// The last rows of a run (the end state, a release): always kept.
+  void add_end(const TrajectorySample& sample);
+  /// The step of a sampling grid that asks for `wanted` in units of `time_unit` seconds: at
+  /// least the least spacing.
+  double step(double wanted, double time_unit = 1.0) const;
+
+ private:
+  void thin();
+  std::vector<TrajectorySample>* rows_;
+  double* thinning_;
+  std::size_t max_rows_;
+};
+
+/// `rows` thinned as TrajectoryRecorder does, to at most `max_rows` (a trajectory joined from
+/// two runs); `thinning` raised to the spacing used.
+void limit_trajectory(std::vector<TrajectorySample>& rows, double& thinning, std::size_t max_rows = max_trajectory_rows);
+
 /// The tangential part of an oblique collision (dynamics/tangential.hpp). Energies in
 /// J; the tangential kinetic energy is (1/2) m_eff kappa (g^T)^2 (BSHP96 (11)).
 struct TangentialOutcome {
@@ -81,7 +117,10 @@ struct CollisionOutcome {
   double max_overlap = 0.0;          ///< [m]
   double time_of_max_overlap = 0.0;  ///< [s]
   EnergyBudget energy;
-  std::vector<TrajectorySample> trajectory;  ///< empty unless requested
+  std::vector<TrajectorySample> trajectory;  ///< empty unless requested; at most max_trajectory_rows
+  /// The least time between rows of a trajectory that reached max_trajectory_rows and was
+  /// thinned [s] (TrajectoryRecorder); 0 when every sample was kept.
+  double trajectory_thinning = 0.0;
   std::vector<std::string> warnings;         ///< validity conditions that do not hold
   std::vector<std::string> notes;            ///< how the result was obtained, when not obvious
   std::string method;                        ///< "integrate", "master" or "closed-form"

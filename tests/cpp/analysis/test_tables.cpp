@@ -104,7 +104,8 @@ TEST(Tables, CHeaderCompilesStandaloneAndAgrees) {
   const std::vector<double> speeds = {0.5, 1.0, 3.0, t.sticking_velocity * (1 + 1e-10), 4.5, 6.0, 9.5, 10.0};
   std::string main = "#include <stdio.h>\n#include \"k13_table.h\"\nint main(void) {\n";
   for (double g : speeds) main += fmt::format("  printf(\"%.17g %d\\n\", k13_cor({0:.17g}), k13_sticks({0:.17g}));\n", g);
-  main += "  printf(\"%d\\n\", k13_cor(20.0) != k13_cor(20.0));\n  return 0;\n}\n";
+  main += "  printf(\"%d\\n\", k13_cor(20.0) != k13_cor(20.0));\n";
+  main += "  printf(\"%d %d\\n\", k13_sticks(20.0), k13_sticks(0.1));\n  return 0;\n}\n";
   std::istringstream out(bounce::testing::compile_and_run_c99(dir, main));
   for (double g : speeds) {
     double cor = 0.0;
@@ -116,6 +117,11 @@ TEST(Tables, CHeaderCompilesStandaloneAndAgrees) {
   int nan_outside = 0;
   out >> nan_outside;
   EXPECT_EQ(nan_outside, 1);  // outside [g_min, g_max]: NaN, never a made-up value
+  int above = 0, below = 0;
+  out >> above >> below;
+  EXPECT_EQ(above, -1);  // and no outcome either (it extrapolated one)
+  EXPECT_EQ(below, -1);
+  EXPECT_THROW((void)t.outcome(20.0), InvalidArgument);
   fs::remove_all(dir);
 }
 
