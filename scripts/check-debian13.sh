@@ -45,6 +45,7 @@ unmount() {
   done
 }
 trap unmount EXIT
+trap 'exit 130' INT TERM  # a stopped run unmounts too (bash runs no EXIT trap on a fatal signal)
 unmount
 if grep -q " $root/" /proc/mounts; then  # never remove through a mount into the machine
   fail "root = $root is invalid: expected nothing mounted inside it ($(grep -c " $root/" /proc/mounts) mounts)"
