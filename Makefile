@@ -15,6 +15,13 @@
 #                    cached in ~/.cache/bounce, and build/lammps/bounceplugin.so against it;
 #                    build/lammps/lmp runs it, and `make test` then runs the LAMMPS tests
 #                    (docs/lammps.md)
+#   make package     Debian packages (CPack DEB) into dist/: libbounce0, libbounce-dev, bounce (man
+#                    page, bash completion), python3-bounce, bounce-lammps-plugin (docs/install.md)
+#   make check-package  opt-in: make package, then the packages unpacked into an empty folder and
+#                    checked (--version, a collision, import bounce, the consumer, plugin load)
+#   make check-pip   opt-in: pip install --no-build-isolation . into a fresh venv, import, pip wheel
+#   make check-debian13  opt-in, root: make test, make demo and make check-pip in a fresh Debian 13
+#                    (trixie) root made by debootstrap (docs/install.md records the times)
 #   make lammps-demo opt-in, on 2 MPI ranks: the homogeneous cooling state of two granular gases
 #                    (~7 min; out/figures/hcs-cooling, out/hcs/results.json) and the aggregation of
 #                    sticky ice grains with K13's law against elastic JKR (~2 min;
@@ -28,15 +35,16 @@ CMAKE_FLAGS ?=
 ASAN_DIR  ?= build-asan
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS ?= materials table rules ranges cli fit_data
-# The sanitizer build's own packages (clang with its sanitizer and libFuzzer runtimes), and
+# The sanitizer build's own packages (clang with its sanitizer and libFuzzer runtimes; LLVM's
+# OpenMP, which SUNDIALS 7's CMake package looks for and clang finds only with it), and
 # clang-tidy for the size check (`make lint`, test lint_sizes).
-SANITIZE_DEPS := clang libclang-rt-dev ccache clang-tidy
+SANITIZE_DEPS := clang libclang-rt-dev libomp-dev ccache clang-tidy
 # Every report ends the process with an error, leaks included (docs/hardening.md).
 SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:strict_init_order=1 \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 .PHONY: all build deps deps-sanitize configure test demo bench check-long check-posterior lint clean \
-        build-sanitize test-sanitize fuzz lammps lammps-demo
+        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip check-debian13
 
 all: build
 
@@ -88,6 +96,22 @@ lammps: deps
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 	@echo "bounce: $(BUILD_DIR)/lammps/lmp and $(BUILD_DIR)/lammps/bounceplugin.so (docs/lammps.md)"
 
+# The packages are built in their own tree (/usr prefix, no tests), with the LAMMPS plugin
+# against `make lammps`'s LAMMPS (scripts/build-lammps.sh prints its src/ folder).
+package: deps
+	@./scripts/install-deps.sh help2man dpkg-dev file xz-utils
+	@src=$$(./scripts/build-lammps.sh) && JOBS=$(JOBS) WERROR=$(WERROR) ./scripts/package.sh build-package dist "$$src"
+
+check-package: package
+	@src=$$(./scripts/build-lammps.sh) && ./scripts/check-package.sh --lmp "$$src/../../build/lmp" dist
+
+check-pip: deps
+	@./scripts/install-deps.sh python3-venv python3-pip python3-setuptools python3-wheel
+	CMAKE_BUILD_PARALLEL_LEVEL=$(JOBS) ./scripts/check-pip.sh
+
+check-debian13:
+	./scripts/check-debian13.sh
+
 lammps-demo: lammps
 	$(PYTHON) tools/hcs.py --build $(BUILD_DIR) --out out
 	$(PYTHON) tools/aggregation.py --build $(BUILD_DIR) --out out
@@ -115,4 +139,4 @@ lint: build
 	./tools/check_sizes.sh $(BUILD_DIR)
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) out
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) out build-package build-pip dist

@@ -5,16 +5,21 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <iostream>
 #include <map>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "bounce/core/suggest.hpp"
+#include "bounce/core/version.hpp"
 #include "commands.hpp"
+#include "completion.hpp"
 #include "output.hpp"
 
 namespace {
@@ -26,16 +31,31 @@ extern "C" void on_interrupt(int /*signal*/) {
   ::_exit(130);
 }
 
+// The options of a (sub)command as typed: "--velocity", "--help", ...
+std::vector<std::string> long_options(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : app.get_options()) {
+    for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+  }
+  return names;
+}
+
 // What the user typed that the chosen command does not take, in the one-line rule
-// (`--force = 3 is invalid: expected ...`), naming the commands that do take it.
-std::string unexpected_argument(const CLI::App& app, const std::vector<bounce::cli::Command>& commands) {
-  for (const auto& command : commands) {
-    if (!command.app->parsed()) continue;
-    const auto extras = command.app->remaining();
-    const std::string name = command.app->get_name();
+// (`--force = 3 is invalid: expected ...`), naming the commands that do take it, or the
+// command's own option it looks like a typo of (`--velocty`: did you mean --velocity?).
+std::string unexpected_argument(const CLI::App& app, const std::vector<const CLI::App*>& commands) {
+  for (const CLI::App* command : commands) {
+    if (!command->parsed()) continue;
+    const auto extras = command->remaining();
+    const std::string name = command->get_name();
+    const std::vector<std::string> own = long_options(*command);
     if (extras.empty() || !extras.front().starts_with("-")) {
-      return fmt::format("argument = {} is invalid: expected only options (see `bounce {} --help`)",
-                         extras.empty() ? "(none)" : extras.front(), name);
+      const std::string word = extras.empty() ? "(none)" : extras.front();
+      const bool dashes_missing = std::find(own.begin(), own.end(), "--" + word) != own.end();  // velocity
+      return fmt::format("argument = {} is invalid: expected only options (see `bounce {} --help`){}", word, name,
+                         extras.empty()    ? ""
+                         : dashes_missing ? fmt::format("; did you mean --{}?", word)
+                                          : bounce::did_you_mean("--" + word, own));
     }
     const std::string& typed = extras.front();
     const auto equals = typed.find('=');
@@ -44,17 +64,28 @@ std::string unexpected_argument(const CLI::App& app, const std::vector<bounce::c
                               : extras.size() > 1 && !extras[1].starts_with("--") ? extras[1]
                                                                                    : "(given)";
     std::vector<std::string> takers;
-    for (const auto& other : commands) {
-      if (other.app != command.app && other.app->get_option_no_throw(flag) != nullptr) {
-        takers.push_back(other.app->get_name());
-      }
+    for (const CLI::App* other : commands) {
+      if (other != command && other->get_option_no_throw(flag) != nullptr) takers.push_back(other->get_name());
     }
     const std::string where = takers.empty() ? fmt::format("see `bounce {} --help`", name)
                                              : fmt::format("commands that take it: {}", fmt::join(takers, ", "));
-    return fmt::format("{} = {} is invalid: expected no {} in `bounce {}` ({})", flag, value, flag, name, where);
+    return fmt::format("{} = {} is invalid: expected no {} in `bounce {}` ({}){}", flag, value, flag, name, where,
+                       takers.empty() ? bounce::did_you_mean(flag, own) : "");
   }
   return fmt::format("argument = {} is invalid: expected a command (see `bounce --help`)",
                      fmt::join(app.remaining(), " "));
+}
+
+// No command, or a word that is none: the commands, and the one it looks like a typo of; an
+// option before any command (`bounce --verison`) is compared with bounce's own options.
+std::string missing_command(const CLI::App& app, int argc, const char* const* argv, const std::vector<std::string>& names) {
+  const std::string typed = argc > 1 ? argv[1] : "(not given)";
+  if (typed.starts_with("-")) {
+    return fmt::format("{} = (given) is invalid: expected a command first, one of {}{}", typed, fmt::join(names, ", "),
+                       bounce::did_you_mean(typed, long_options(app)));
+  }
+  return fmt::format("command = {} is invalid: expected one of {}{}", typed, fmt::join(names, ", "),
+                     bounce::did_you_mean(typed, names));
 }
 
 // An option given twice (`--velocity 1 --velocity 2`, `--json --json`): which value would be
@@ -101,12 +132,22 @@ void exit_on_interrupt() {
 int run(int argc, const char* const* argv) {
   CLI::App app{"bounce: will two adhesive, viscoelastic spheres bounce or stick?", "bounce"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "bounce 0.1.0");
+  app.set_version_flag("--version", fmt::format("bounce {}", bounce::version()));
+  app.set_help_all_flag("--help-all", "Print this help with every command's options");
+  app.footer("`bounce COMMAND --help` lists the options of a command.");
   std::vector<Command> commands;
   std::vector<std::string> names;
   for (const auto& spec : bounce::api::commands()) {
     commands.push_back(add_command(app, spec));
     names.push_back(spec.name);
+  }
+  const CLI::App* completion = add_completion_command(app);
+  names.push_back(completion->get_name());
+  if (argc <= 1) {  // `bounce` alone introduces itself: what it is and its commands
+    return run_guarded([&app] {
+      std::cout << app.help();
+      return 0;
+    }, {});
   }
   if (const std::string repeated = repeated_option(argc, argv); !repeated.empty()) {
     std::cerr << "bounce: error: " << repeated << '\n';
@@ -121,12 +162,10 @@ int run(int argc, const char* const* argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ExtrasError&) {
-    std::cerr << "bounce: error: " << unexpected_argument(app, commands) << '\n';
+    std::cerr << "bounce: error: " << unexpected_argument(app, std::as_const(app).get_subcommands({})) << '\n';
     return 2;
-  } catch (const CLI::RequiredError& e) {
-    const bool typed = argc > 1 && argv[1][0] != '-';  // a word that is no command
-    std::cerr << fmt::format("bounce: error: command = {} is invalid: expected one of {}\n",
-                             typed ? argv[1] : "(not given)", fmt::join(names, ", "));
+  } catch (const CLI::RequiredError&) {
+    std::cerr << "bounce: error: " << missing_command(app, argc, argv, names) << '\n';
     return 2;
   } catch (const CLI::ArgumentMismatch& e) {
     std::cerr << "bounce: error: " << missing_value(e) << '\n';
@@ -137,6 +176,12 @@ int run(int argc, const char* const* argv) {
   }
   for (const Command& command : commands) {
     if (command.app->parsed()) return run_guarded(command.run, command.options->all_names(), command.options->inputs());
+  }
+  if (completion->parsed()) {
+    return run_guarded([&app] {
+      std::cout << bash_completion(app);
+      return 0;
+    }, {});
   }
   return 2;
 }

@@ -43,6 +43,7 @@ from ._bounce import (  # noqa: F401
     sticking_velocity,
     viscoelastic_scales,
 )
+from ._bounce import __version__  # noqa: F401  (the library's, the CMake project's version)
 from .posterior import posterior  # noqa: F401  (emcee over a fit's parameters)
 
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bounce/core/error.hpp"
+#include "bounce/core/version.hpp"
 #include "objects.hpp"
 
 namespace {
@@ -27,6 +28,7 @@ std::string python_message(const bounce::InvalidArgument& e) {
 PYBIND11_MODULE(_bounce, m) {
   using namespace bounce;
   m.doc() = "bounce: the physics of colliding grains (C++ core; see docs/python.md)";
+  m.attr("__version__") = std::string(bounce::version());  // the CMake project's version
   pybind11::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

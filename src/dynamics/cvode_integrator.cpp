@@ -48,9 +48,26 @@ struct CvodeIntegrator::Impl {
     }
     return 0;
   }
+  // CVODE's error text, kept for the exception: SUNDIALS 7's context handler stack
+  // (cmake/BounceSundials.cmake tells which API compiles) or SUNDIALS 6's CVODE handler.
+#if BOUNCE_SUNDIALS_PUSH_ERR_HANDLER
+  static void error_handler(int, const char* function, const char*, const char* message, SUNErrCode code,
+                            void* data, SUNContext) {
+    static_cast<Impl*>(data)->last_error = fmt::format("{} ({}): {}", function, code, message);
+  }
+  void install_error_handler() {
+    // The default handler prints to stderr; ours only keeps the text for the exception.
+    if (SUNContext_ClearErrHandlers(context) != SUN_SUCCESS ||
+        SUNContext_PushErrHandler(context, &Impl::error_handler, this) != SUN_SUCCESS) {
+      throw NumericalError("SUNDIALS error handler could not be installed");
+    }
+  }
+#else
   static void error_handler(int, const char* module, const char* function, char* message, void* data) {
     static_cast<Impl*>(data)->last_error = fmt::format("{} {}: {}", module, function, message);
   }
+  void install_error_handler() { CVodeSetErrHandlerFn(memory, &Impl::error_handler, this); }
+#endif
 
   void check(int flag, const char* what) const {
     if (flag < 0) throw NumericalError(fmt::format("CVODE {} failed ({}): {}", what, flag, last_error));
@@ -80,7 +97,11 @@ CvodeIntegrator::CvodeIntegrator(const StiffSystem& system, const std::vector<do
   m.t = t0;
   const int n = system.size();
   m.enabled.assign(static_cast<std::size_t>(system.event_count()), true);
+#if BOUNCE_SUNDIALS_COMM_NULL
+  if (SUNContext_Create(SUN_COMM_NULL, &m.context) != 0) throw NumericalError("SUNDIALS context creation failed");
+#else
   if (SUNContext_Create(nullptr, &m.context) != 0) throw NumericalError("SUNDIALS context creation failed");
+#endif
   m.y = N_VNew_Serial(n, m.context);
   N_VEnableFusedOps_Serial(m.y, SUNTRUE);  // fewer calls per step: a 5-vector is all overhead
   m.atol = N_VNew_Serial(n, m.context);
@@ -90,7 +111,10 @@ CvodeIntegrator::CvodeIntegrator(const StiffSystem& system, const std::vector<do
   }
   m.memory = CVodeCreate(CV_BDF, m.context);
   if (m.memory == nullptr) throw NumericalError("CVodeCreate failed");
-  CVodeSetErrHandlerFn(m.memory, &Impl::error_handler, &m);
+  m.install_error_handler();
+  // No "t + h = t" warnings: SUNDIALS 7's default logger would print them on stdout; a step
+  // too small for the time's resolution ends in an error (or our step budget) all the same.
+  m.check(CVodeSetMaxHnilWarns(m.memory, -1), "warnings");
   m.check(CVodeInit(m.memory, &Impl::rhs, t0, m.y), "init");
   m.check(CVodeSVtolerances(m.memory, settings.relative_tolerance, m.atol), "tolerances");
   m.check(CVodeSetUserData(m.memory, &m), "user data");

@@ -151,7 +151,7 @@ const Material& MaterialTable::at(std::string_view name) const {
   for (const Material& m : materials_) {
     if (m.name == name) return m;
   }
-  throw InvalidArgument("material", std::string(name), "one of " + join(names()));
+  throw InvalidArgument("material", std::string(name), "one of " + join(names()) + did_you_mean(name, names()));
 }
 
 std::vector<std::string> MaterialTable::names() const {

@@ -36,7 +36,8 @@ def test_recovers_a_from_the_models_own_curve():
 def test_equals_the_cli_on_a_file(tmp_path):
     v, e = _curve(5e-6)
     path = tmp_path / "d.csv"
-    path.write_text("velocity,cor,cor_error\n" + "".join(f"{x!r},{y!r},0.01\n" for x, y in zip(v, e)))
+    # float(): numpy 2 spells a float64 np.float64(...) in repr, numpy 1 as a plain number
+    path.write_text("velocity,cor,cor_error\n" + "".join(f"{float(x)!r},{float(y)!r},0.01\n" for x, y in zip(v, e)))
     py = bounce.fit(bounce.Pair(**ICE), bounce.Model("viscoelastic"), data=str(path), grid=GRID, fit="A,yield_strength")
     cli = os.environ.get("BOUNCE_CLI", os.path.join(ROOT, "build", "bin", "bounce"))
     out = subprocess.run([cli, "fit", "--data", str(path), "--material", "ice-bshp96", "--radius", "1e-2", "--model",

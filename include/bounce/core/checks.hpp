@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bounce/core/error.hpp"
+#include "bounce/core/suggest.hpp"
 
 namespace bounce {
 
@@ -47,7 +48,8 @@ std::string one_of(const std::vector<std::string>& names);
 std::string json_error_words(int id, std::string_view what);
 
 /// The row of `rows` (anything with a `name`) called `name`; InvalidArgument(parameter, name,
-/// "one of …") when there is none. The registries' lookup (models, contact laws, commands).
+/// "one of …", with the likely name when `name` looks like a typo of one) when there is none.
+/// The registries' lookup (models, contact laws, commands).
 template <class Rows>
 const auto& find_named(const Rows& rows, std::string_view name, const char* parameter) {
   std::vector<std::string> names;
@@ -55,7 +57,7 @@ const auto& find_named(const Rows& rows, std::string_view name, const char* para
     if (row.name == name) return row;
     names.push_back(row.name);
   }
-  throw InvalidArgument(parameter, std::string(name), "one of " + one_of(names));
+  throw InvalidArgument(parameter, std::string(name), "one of " + one_of(names) + did_you_mean(name, names));
 }
 
 }  // namespace bounce

@@ -48,9 +48,11 @@ TEST(Independent, PressureIntegratesToForce) {
     // the integrand is analytic on [0, 1], so 30-point Gauss-Legendre is exact to
     // round-off. The round-off of a - r is eps/u^2 relative; the smallest node is
     // u = 1.6e-3 with weight 4e-3, so it contributes ~2e-13: bound 1e-11.
-    auto integrand = [&, a = a, delta = delta](double u) {  // clang 14 cannot capture a structured binding
-      const double r = a * (1.0 - u * u);
-      return 2.0 * std::numbers::pi * r * contact::independent::pressure(g, a, delta, r) * 2.0 * a * u;
+    // Copies under their own names: clang 14 cannot capture a structured binding, and clang 19
+    // warns (-Wshadow) when a copy keeps the binding's name.
+    auto integrand = [&, radius = a, approach = delta](double u) {
+      const double r = radius * (1.0 - u * u);
+      return 2.0 * std::numbers::pi * r * contact::independent::pressure(g, radius, approach, r) * 2.0 * radius * u;
     };
     const double f = boost::math::quadrature::gauss<double, 30>::integrate(integrand, 0.0, 1.0);
     EXPECT_NEAR(f, contact::independent::elastic_force(g, a, delta),
