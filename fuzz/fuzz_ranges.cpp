@@ -27,14 +27,17 @@ using bounce::fuzz::only_bounce_errors;
 
 namespace {
 
-// The N of "LO:HI:N" when the text ends in ":digits" (else 0).
+// The N of "LO:HI:N" when the text ends in ":N" with N a whole number in any form ("1000",
+// "1e3", ".013031e8": parse_range takes each, docs/cli.md), else 0.
 long points_of(const std::string& text) {
   const auto colon = text.rfind(':');
   if (colon == std::string::npos) return 0;
-  long n = 0;
+  double n = 0.0;
   const char* begin = text.data() + colon + 1;
   const auto [end, ec] = std::from_chars(begin, text.data() + text.size(), n);
-  return ec == std::errc() && end == text.data() + text.size() ? n : (ec == std::errc::result_out_of_range ? -1 : 0);
+  if (ec == std::errc::result_out_of_range) return -1;
+  if (ec != std::errc() || end != text.data() + text.size() || !(n >= 0.0) || n != std::floor(n)) return 0;
+  return n < 9e18 ? static_cast<long>(n) : -1;
 }
 
 void check_range(const std::string& text, bool log) {

@@ -6,6 +6,7 @@
 #include "batch.hpp"
 
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -132,17 +133,31 @@ void save(const std::string& dir, const Unit& u, const std::string& text) {
   std::filesystem::rename(temporary, path);
 }
 
+#ifdef BOUNCE_HAVE_MPI
+// Whether an MPI launcher (mpirun/mpiexec of Open MPI, MPICH, PMIx) started this process.
+bool launched_by_mpi() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"}) {
+    if (std::getenv(name) != nullptr) return true;
+  }
+  return false;
+}
+#endif
+
 struct Mpi {
   int rank = 0, size = 1;
 #ifdef BOUNCE_HAVE_MPI
-  bool started = false;
+  bool started = false, active = false;
+  // A plain `bounce fit --batch` is one rank without MPI: a singleton MPI_Init starts Open MPI's
+  // orted for nothing, and its allocations are reported as leaks under LeakSanitizer.
   Mpi() {
     int initialised = 0;
     MPI_Initialized(&initialised);
+    if (!initialised && !launched_by_mpi()) return;
     if (!initialised) {
       MPI_Init(nullptr, nullptr);
       started = true;
     }
+    active = true;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
   }
@@ -150,11 +165,13 @@ struct Mpi {
     if (started) MPI_Finalize();
   }
   int min(int value) const {
+    if (!active) return value;
     int out = 0;
     MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
     return out;
   }
   long sum(long value) const {
+    if (!active) return value;
     long out = 0;
     MPI_Allreduce(&value, &out, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
     return out;
