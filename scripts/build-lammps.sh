@@ -29,17 +29,7 @@ if [ -f "$cache/ok" ] && [ -x "$cache/build/lmp" ]; then
   exit 0
 fi
 
-# The Debian mirror the machine already uses (deb822 or one-line sources), else deb.debian.org.
-mirror() {
-  local uri=""
-  if compgen -G "/etc/apt/sources.list.d/*.sources" >/dev/null; then
-    uri=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/*.sources 2>/dev/null | grep -v security || true)
-  fi
-  if [ -z "$uri" ] && [ -f /etc/apt/sources.list ]; then
-    uri=$(awk '$1 == "deb" && $0 !~ /security/ {for (i = 2; i <= NF; i++) if ($i ~ /^https?:/) {print $i; exit}}' /etc/apt/sources.list || true)
-  fi
-  echo "${uri:-http://deb.debian.org/debian}"
-}
+mirror() { "$(dirname "$0")/debian-mirror.sh"; }  # the machine's Debian mirror
 
 mkdir -p "$cache"
 download="$cache/download"

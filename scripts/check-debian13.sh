@@ -27,17 +27,7 @@ mkdir -p "$(dirname "$root")"
 root="$(cd "$(dirname "$root")" && pwd)/$(basename "$root")"
 logs=$(dirname "$root")
 
-# The Debian mirror the machine already uses (as scripts/build-lammps.sh finds it).
-mirror() {
-  local uri=""
-  if compgen -G "/etc/apt/sources.list.d/*.sources" >/dev/null; then
-    uri=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/*.sources 2>/dev/null | grep -v security || true)
-  fi
-  if [ -z "$uri" ] && [ -f /etc/apt/sources.list ]; then
-    uri=$(awk '$1 == "deb" && $0 !~ /security/ {for (i = 2; i <= NF; i++) if ($i ~ /^https?:/) {print $i; exit}}' /etc/apt/sources.list || true)
-  fi
-  echo "${uri:-http://deb.debian.org/debian}"
-}
+mirror() { scripts/debian-mirror.sh; }  # the machine's Debian mirror (the tree is the working directory)
 
 unmount() {
   for m in dev sys proc; do

@@ -11,6 +11,11 @@
 
 namespace bounce::analysis::detail {
 
+/// `s` without leading and trailing spaces, tabs and carriage returns.
+std::string_view trim(std::string_view s);
+/// `s` in ASCII lower case.
+std::string lower(std::string_view s);
+
 /// `text` without a UTF-8 byte-order mark; InvalidArgument(`source`) for a UTF-16 or UTF-32
 /// one (a file saved as "Unicode text": the reader takes UTF-8 or ASCII).
 std::string_view strip_byte_order_mark(std::string_view text, std::string_view source);

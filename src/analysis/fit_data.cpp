@@ -29,18 +29,8 @@ constexpr std::size_t max_points = 1'000'000;
 
 constexpr std::array<const char*, 4> columns = {"velocity", "cor", "cor_error", "outcome"};
 
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return s.substr(first, last - first + 1);
-}
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
+using detail::lower;
+using detail::trim;
 
 std::string delimiter_name(char delimiter) {
   return delimiter == '\t' ? "tab" : delimiter == ';' ? "semicolon" : "comma";
