@@ -157,9 +157,10 @@ static double tt_cor(const tt_table *t, double gn, double gt, long *breaks) {
    * g^T, which stays below about 1.2 (|eps^T| <= 1.13 with the published form): a collision
    * has fewer than tau_end / level breaks. Four times that (and a few per node) is the
    * budget; a table that asks for more was altered (the fuzzer's dK/ds 1e6 times too large
-   * replayed 1e8 breaks): no value. */
+   * replayed 1e8 breaks): no value. bounce refuses to load a table needing more than 1e5
+   * breaks; 1e6 bounds a lookup to ~0.3 s whatever the table. */
   budget = 4.0 * tau_end / level + 64.0 * t->nodes;
-  if (!(budget < 1e8)) budget = 1e8;
+  if (!(budget < 1e6)) budget = 1e6;
   tt_mix(t, t->node, (long)t->nodes * tt_node_values, 0, tt_node_values, first, w, lo);
   for (j = 0; j + 1 < t->nodes; ++j) {
     const double h = t->s[j + 1] - t->s[j];
