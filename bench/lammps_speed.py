@@ -13,7 +13,7 @@
    the crack constant k = 0.1 and 0.5 instead of K13's 0.02;
 3. strong scaling: 103 823 grains on 1 and 2 ranks (loop time).
 
-    /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR [bed]]      (after make lammps; bed: 1. only)
+    /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR [bed|scaling]]  (after make lammps; bed: 1. only, scaling: the strong scaling only)
 """
 import os
 import re
@@ -257,8 +257,9 @@ def scaling():
 
 if __name__ == "__main__":
     start = time.time()
-    if len(sys.argv) > 2 and sys.argv[2] == "bed":  # the issue's bound alone
-        bed_per_contact()
+    if len(sys.argv) > 2 and sys.argv[2] in ("bed", "scaling"):  # one part alone
+        {"bed": bed_per_contact, "scaling": scaling}[sys.argv[2]]()
+        print(f"({time.time() - start:.0f} s)")
         sys.exit(0)
     bed_per_contact()
     per_contact()
