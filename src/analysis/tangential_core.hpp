@@ -5,8 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "bounce/analysis/tables.hpp"
+#include "bounce/core/error.hpp"
 
 namespace bounce::analysis::detail {
 
@@ -21,18 +25,24 @@ namespace bounce::analysis::detail {
 // A lookup at (g^N, g^T) replays about tau_end g^T t_u / zeta0 asperity breaks (|p| climbs
 // to zeta0 / (g^T t_u) between two, at a rate below ~1.2). The builder's g^T limit (half of
 // dense_breaks = 1e3 breaks per time unit) keeps written tables below ~1.5e3; a table above
-// max_lookup_breaks was altered (the fuzzer's g_tangential_max 1 -> 1e6 replayed 8.8e7
-// breaks, 28 s a lookup) or asks more than a lookup should do.
+// max_lookup_breaks was altered (a g_tangential_max raised from 1 to 1e6 replayed 8.8e7
+// breaks, 28 s a lookup; the fuzzer found such a table) or asks more than a lookup should do.
 inline constexpr double max_lookup_breaks = 1e5;
 
-// The most breaks a lookup of t can replay: at g^T max, over the rows.
-inline double expected_breaks(const TangentialTable& t) {
+// Refuses t when a lookup at its g^T max would replay more than max_lookup_breaks breaks (the
+// most over its rows), naming `name` = `value` (and `source`, what such a table comes from).
+inline void require_bounded_lookups(const TangentialTable& t, const std::string& name, const std::string& value,
+                                    const std::string& source) {
   double most = 0.0;
   for (std::size_t r = 0; r < t.row_count(); ++r) {
     const double tau_end = t.rows[r * tt_row_values], time_unit = std::exp(t.rows[r * tt_row_values + 1]);
     most = std::max(most, tau_end * t.gt_max * time_unit / t.asperity_size);
   }
-  return most;
+  if (!(most <= max_lookup_breaks)) {
+    throw InvalidArgument(name, value,
+                          fmt::format("a g^T range whose lookups replay at most {:g} asperity breaks (this one: {:.3g}{})",
+                                      max_lookup_breaks, most, source));
+  }
 }
 
 inline tt_table view(const TangentialTable& t) {

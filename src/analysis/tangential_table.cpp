@@ -125,13 +125,8 @@ TangentialTable TangentialTable::from_json(const std::string& text) {
       throw InvalidArgument("table", "(fundamental solutions with Wronskian != 1)", "a table written by bounce table");
     }
   }
-  const double breaks = detail::expected_breaks(t);
-  if (!(breaks <= detail::max_lookup_breaks)) {
-    throw InvalidArgument("table", fmt::format("g_tangential_max = {:g}", t.gt_max),
-                          fmt::format("a g^T range whose lookups replay at most {:g} asperity breaks (this one: "
-                                      "{:.3g}; a table written by bounce table)",
-                                      detail::max_lookup_breaks, breaks));
-  }
+  detail::require_bounded_lookups(t, "table", fmt::format("g_tangential_max = {:g}", t.gt_max),
+                                  "; a table written by bounce table");
   return t;
 }
 

@@ -231,12 +231,8 @@ TangentialTable Builder::build(double gn_min, double gn_max, double gt_min, doub
     between.push_back({gn, gt, direct_cor(gn, gt)});
   }
   refine_rows(between);
-  if (const double breaks = detail::expected_breaks(t_); !(breaks <= detail::max_lookup_breaks)) {
-    // Only a TangentialModel with dense_breaks far above its default gets here.
-    throw InvalidArgument("tangential_velocity_max", fmt::format("{:g}", gt_max),
-                          fmt::format("a g^T range whose lookups replay at most {:g} asperity breaks (this one: {:.3g})",
-                                      detail::max_lookup_breaks, breaks));
-  }
+  // Refused only for a TangentialModel with dense_breaks far above its default.
+  detail::require_bounded_lookups(t_, "tangential_velocity_max", fmt::format("{:g}", gt_max), "");
   t_.checked_error = std::max(t_.checked_error, worst(on_rows));
   t_.check_points = static_cast<long>(on_rows.size() + between.size());
   t_.warnings = warnings_.list();

@@ -224,8 +224,8 @@ TEST(TangentialTables, Cli) {
 
 TEST(TangentialTable, AlteredTablesOfTheFuzzerEndQuickly) {
   // fuzz/findings/table: altered tables whose lookups replayed 1e8 asperity breaks. A y2
-  // altered breaks the Wronskian and is refused; so is a g_tangential_max raised 1 -> 1e6
-  // (8.8e7 breaks at g^T max: above the 1e5 a table may ask); a dK/ds altered (1e6 times) passes every
+  // altered breaks the Wronskian and is refused; so is a g_tangential_max raised 0.1 -> 1e6
+  // (9e7 breaks at g^T max: above the 1e5 a table may ask); a dK/ds altered (1e6 times) passes every
   // check of the data, and its lookups now end within the physical budget of breaks,
   // 4 tau_end / level + 64 per node (tangential_table_core.h), with a value or none.
   std::string y2;
