@@ -21,6 +21,7 @@
 #include "bounce/api/front_door.hpp"
 #include "bounce/models/contact_law.hpp"
 #include "contact_step.h"
+#include "rigid_masses.h"
 #include "stop.h"
 
 using namespace LAMMPS_NS;
@@ -109,16 +110,8 @@ void FixWallBounce::init()
 // Each owned atom's rigid body's mass (0 if none), refreshed where atoms were exchanged.
 void FixWallBounce::update_rigid_masses()
 {
-  int unused = 0;
-  const int *body = static_cast<const int *>(fix_rigid_->extract("body", unused));
-  const double *mass_body = static_cast<const double *>(fix_rigid_->extract("masstotal", unused));
-  if (!body || !mass_body) error->all(FLERR, "fix wall/bounce: fix {} gives no bodies' masses", fix_rigid_->style);
-  if (atom->nmax > nmax_rigid_) {
-    memory->destroy(mass_rigid_);
-    nmax_rigid_ = atom->nmax;
-    memory->create(mass_rigid_, nmax_rigid_, "fix_wall_bounce:mass_rigid");
-  }
-  for (int i = 0; i < atom->nlocal; i++) mass_rigid_[i] = body[i] >= 0 ? mass_body[body[i]] : 0.0;
+  bounce::lammps::rigid_masses(lmp, fix_rigid_, mass_rigid_, nmax_rigid_, "fix wall/bounce",
+                               "fix_wall_bounce:mass_rigid");
 }
 
 // m_eff against an immovable wall: the atom's mass, or its rigid body's.

@@ -21,6 +21,7 @@
 #include "utils.h"
 
 #include "contact_step.h"
+#include "rigid_masses.h"
 #include "type_laws.h"
 
 using namespace LAMMPS_NS;
@@ -143,16 +144,7 @@ double PairBounce::single(int i, int j, int, int, double, double, double factor_
 // were exchanged (as pair granular).
 void PairBounce::update_rigid_masses()
 {
-  int unused = 0;
-  const int *body = static_cast<const int *>(fix_rigid_->extract("body", unused));
-  const double *mass_body = static_cast<const double *>(fix_rigid_->extract("masstotal", unused));
-  if (!body || !mass_body) error->all(FLERR, "pair_style bounce: fix {} gives no bodies' masses", fix_rigid_->style);
-  if (atom->nmax > nmax_rigid_) {
-    memory->destroy(mass_rigid_);
-    nmax_rigid_ = atom->nmax;
-    memory->create(mass_rigid_, nmax_rigid_, "pair:mass_rigid");
-  }
-  for (int i = 0; i < atom->nlocal; i++) mass_rigid_[i] = body[i] >= 0 ? mass_body[body[i]] : 0.0;
+  bounce::lammps::rigid_masses(lmp, fix_rigid_, mass_rigid_, nmax_rigid_, "pair_style bounce", "pair:mass_rigid");
 #if BOUNCE_LAMMPS_FORWARD_COMM
   comm->forward_comm(this);
 #else
