@@ -37,7 +37,6 @@ CollisionTime collision_time(const CollisionOutcome& out, const Pair& pair, doub
   return {out.contact_time, "the contact time"};
 }
 
-// Quasi-static validity (BSHP96 (B11)-(B12), BP04 (8.26)) and small strain.
 // Young's moduli of grain materials run from soft gels and rubbers (~1e4-1e6 Pa) to diamond
 // (1.2e12 Pa): a value outside 1e3-1.5e12 Pa is most likely in the wrong unit (MPa or GPa
 // typed as a number of Pa). Accepted (any E > 0 is a valid input), but said.
@@ -53,6 +52,7 @@ void add_material_warnings(CollisionOutcome& out, const Pair& pair) {
   if (!pair.body2().rigid) check("body2", pair.body2().material);
 }
 
+// Quasi-static validity (BSHP96 (B11)-(B12), BP04 (8.26)), small strain, and the material's E.
 void add_validity_warnings(CollisionOutcome& out, const Pair& pair, double velocity, double viscous_time,
                            const CollisionTime& t_c) {
   add_material_warnings(out, pair);
