@@ -89,32 +89,41 @@ class KrijtSystem final : public StiffSystem {
   }
   bool in_domain(const Physical& x) const { return x.a > 0.0 && x.beta > p_.k && x.beta < 1.0 / p_.k; }
 
-  int rhs(double, const double* y, double* dydt) const override {
+  int rhs(double, const double* y, double* dydt) const override { return evaluate(y, dydt, nullptr); }
+  int jacobian(double, const double* y, double* j, double* dfdt) const override {
+    double f[5];
+    if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);  // autonomous
+    return evaluate(y, f, j);
+  }
+  int linearize(double, const double* y, double* f, double* j, double* dfdt) const override {
+    if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);
+    return evaluate(y, f, j);
+  }
+  /// U_CD and U_BD enter no right-hand side.
+  unsigned quadratures() const override { return (1u << 3) | (1u << 4); }
+
+ private:
+  // The right-hand side and, unless j is null, the Jacobian: one evaluation of beta and of
+  // the crack law for both (the engine asks for them together at every step).
+  int evaluate(const double* y, double* dydt, double* j) const {
     const Physical x = physical(y);
     if (!in_domain(x)) return 1;  // recoverable: the engine retries a smaller step
+    const models::CrackSpeed f = models::crack_speed_function(x.beta, p_.k);
     const double fe = models::elastic_force(p_, x.a, x.delta);
     const double fd = models::bulk_dissipative_force(p_, x.a, x.rate);
-    const double a_dot = c_ * models::crack_speed_function(x.beta, p_.k).value;
+    const double a_dot = c_ * f.value;
     dydt[0] = y[1];
     dydt[1] = -(fe + fd) / p_.effective_mass * s_.time / s_.speed;                                  // K13 (20)
     dydt[2] = a_dot * s_.time / s_.radius;                                                          // K13 (16)-(17)
     dydt[3] = 2.0 * pi * x.a * p_.surface_energy * (1.0 - x.beta) * a_dot * s_.time / s_.energy;  // K13 (C.2)
     dydt[4] = fd * x.rate * s_.time / s_.energy;                                                   // K13 (C.3)
-    return 0;
-  }
-
-  int jacobian(double, const double* y, double* j, double* dfdt) const override {
-    const Physical x = physical(y);
-    if (!in_domain(x)) return 1;
-    if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);  // autonomous
+    if (j == nullptr) return 0;
     const double r = p_.effective_radius, e = p_.effective_modulus, m = p_.effective_mass;
     const double gamma = p_.surface_energy, a_coef = p_.dissipative_constant;
-    const models::CrackSpeed f = models::crack_speed_function(x.beta, p_.k);
     const double mismatch = x.a * x.a - x.delta * r;
     // d beta / d delta and d beta / d a from K13 (14).
     const double dbeta_ddelta = -e * mismatch / (pi * x.a * r * gamma);
     const double dbeta_da = e * mismatch * (3.0 * x.a * x.a + x.delta * r) / (2.0 * pi * x.a * x.a * r * r * gamma);
-    const double a_dot = c_ * f.value;
     const double da_ddelta = c_ * f.derivative * dbeta_ddelta;
     const double da_da = c_ * f.derivative * dbeta_da;
     // Physical Jacobian (columns: delta, rate, a, U_CD, U_BD).
@@ -137,6 +146,7 @@ class KrijtSystem final : public StiffSystem {
     return 0;
   }
 
+ public:
   /// The events, by index.
   enum Event : int {
     max_compression,  ///< delta' = 0

@@ -99,7 +99,16 @@ RodasIntegrator::RodasIntegrator(const StiffSystem& system, const std::vector<do
                                  const StiffSettings& settings)
     : system_(system), settings_(settings), n_(system.size()), t_(t0), t_old_(t0), t_new_(t0) {
   if (n_ < 1 || n_ > capacity) throw NumericalError(fmt::format("RODAS: {} components, 1 to {} allowed", n_, capacity));
-  std::tie(factorize_, solve_) = linear_algebra(n_, std::make_integer_sequence<int, capacity>{});
+  const unsigned quadratures = system.quadratures();
+  for (int i = 0; i < n_; ++i) {
+    if ((quadratures >> i) & 1u) {
+      quadrature_[static_cast<std::size_t>(quadrature_count_++)] = i;
+    } else {
+      coupled_[static_cast<std::size_t>(m_++)] = i;
+    }
+  }
+  if (m_ == 0) throw NumericalError("RODAS: every component is a quadrature");
+  std::tie(factorize_, solve_) = linear_algebra(m_, std::make_integer_sequence<int, capacity>{});
   for (int i = 0; i < n_; ++i) y_[i] = y0.at(static_cast<std::size_t>(i));
   y_old_ = y_new_ = y_;
   settings_.absolute_tolerance.resize(static_cast<std::size_t>(n_), settings.relative_tolerance);
@@ -154,50 +163,74 @@ double RodasIntegrator::initial_step() {
   return std::min(100.0 * h0, h1);
 }
 
+bool RodasIntegrator::linearize() {
+  if (linearized_) return true;
+  const int flag = system_.linearize(t_, y_.data(), f0_.data(), jacobian_.data(), dfdt_.data());
+  if (flag < 0) throw NumericalError("RODAS: unrecoverable failure of the right-hand side");
+  linearized_ = flag == 0;
+  return linearized_;
+}
+
+void RodasIntegrator::solve(Vec& g, double gamma_h) const {
+  Vec b;
+  for (int i = 0; i < m_; ++i) b[static_cast<std::size_t>(i)] = g[static_cast<std::size_t>(coupled_[i])];
+  solve_(lu_.data(), pivot_.data(), b.data());
+  for (int i = 0; i < m_; ++i) g[static_cast<std::size_t>(coupled_[i])] = b[static_cast<std::size_t>(i)];
+  for (int q = 0; q < quadrature_count_; ++q) {
+    const int row = quadrature_[static_cast<std::size_t>(q)];
+    double sum = g[static_cast<std::size_t>(row)];
+    for (int i = 0; i < m_; ++i) sum += jacobian_[static_cast<std::size_t>(row * n_ + coupled_[i])] * b[static_cast<std::size_t>(i)];
+    g[static_cast<std::size_t>(row)] = gamma_h * sum;
+  }
+}
+
 bool RodasIntegrator::attempt(double h, Vec& y_new, Vec& error) {
   const int n = n_;
-  Vec f{}, dfdt{}, x{};
-  Mat a{};
-  std::array<int, capacity> pivot{};
+  Vec f{}, x{};
   auto fail = [](int flag) {
     if (flag < 0) throw NumericalError("RODAS: unrecoverable failure of the right-hand side");
     return flag != 0;
   };
-  if (fail(system_.rhs(t_, y_.data(), f.data()))) return false;
-  if (fail(system_.jacobian(t_, y_.data(), a.data(), dfdt.data()))) return false;
-  for (int i = 0; i < n * n; ++i) a[i] = -a[i];
-  for (int i = 0; i < n; ++i) a[i * n + i] += 1.0 / (C::gamma * h);
-  if (!factorize_(a.data(), pivot.data())) return false;
+  if (!linearize()) return false;
+  const Vec& dfdt = dfdt_;
+  for (int i = 0; i < m_; ++i) {
+    for (int k = 0; k < m_; ++k) {
+      lu_[static_cast<std::size_t>(i * m_ + k)] = -jacobian_[static_cast<std::size_t>(coupled_[i] * n + coupled_[k])];
+    }
+    lu_[static_cast<std::size_t>(i * m_ + i)] += 1.0 / (C::gamma * h);
+  }
+  if (!factorize_(lu_.data(), pivot_.data())) return false;
+  const double gh = C::gamma * h;
   auto& [g1, g2, g3, g4, g5] = stages_;
-  for (int i = 0; i < n; ++i) g1[i] = f[i] + h * C::d1 * dfdt[i];
-  solve_(a.data(), pivot.data(), g1.data());
+  for (int i = 0; i < n; ++i) g1[i] = f0_[i] + h * C::d1 * dfdt[i];
+  solve(g1, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a21 * g1[i];
   if (fail(system_.rhs(t_ + C::c2 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g2[i] = f[i] + h * C::d2 * dfdt[i] + C::c21 * g1[i] / h;
-  solve_(a.data(), pivot.data(), g2.data());
+  solve(g2, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a31 * g1[i] + C::a32 * g2[i];
   if (fail(system_.rhs(t_ + C::c3 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g3[i] = f[i] + h * C::d3 * dfdt[i] + (C::c31 * g1[i] + C::c32 * g2[i]) / h;
-  solve_(a.data(), pivot.data(), g3.data());
+  solve(g3, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a41 * g1[i] + C::a42 * g2[i] + C::a43 * g3[i];
   if (fail(system_.rhs(t_ + C::c4 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g4[i] = f[i] + h * C::d4 * dfdt[i] + (C::c41 * g1[i] + C::c42 * g2[i] + C::c43 * g3[i]) / h;
-  solve_(a.data(), pivot.data(), g4.data());
+  solve(g4, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a51 * g1[i] + C::a52 * g2[i] + C::a53 * g3[i] + C::a54 * g4[i];
   if (fail(system_.rhs(t_ + h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g5[i] = f[i] + (C::c51 * g1[i] + C::c52 * g2[i] + C::c53 * g3[i] + C::c54 * g4[i]) / h;
-  solve_(a.data(), pivot.data(), g5.data());
+  solve(g5, gh);
 
   for (int i = 0; i < n; ++i) x[i] += g5[i];
   if (fail(system_.rhs(t_ + h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) {
     error[i] = f[i] + (C::c61 * g1[i] + C::c62 * g2[i] + C::c63 * g3[i] + C::c64 * g4[i] + C::c65 * g5[i]) / h;
   }
-  solve_(a.data(), pivot.data(), error.data());
+  solve(error, gh);
   for (int i = 0; i < n; ++i) {
     y_new[i] = x[i] + error[i];
     if (!std::isfinite(y_new[i])) return false;
@@ -274,6 +307,7 @@ std::vector<int> RodasIntegrator::fired(const Events& g, double& first) const {
 RodasIntegrator::Events RodasIntegrator::step_to_event(double first, const std::vector<int>& fired) {
   t_ = t_old_;
   y_ = y_old_;
+  linearized_ = false;
   Vec y_event{}, unused{};
   if (first < t_new_ && first > t_old_ && attempt(first - t_old_, y_event, unused)) {
     dense_output();
@@ -283,6 +317,7 @@ RodasIntegrator::Events RodasIntegrator::step_to_event(double first, const std::
     y_ = interpolate(first);
   }
   t_ = first;
+  linearized_ = false;
   Events g = events_at(t_, y_);
   for (int index : fired) {
     const int dir = settings_.event_directions[static_cast<std::size_t>(index)];
@@ -310,6 +345,7 @@ StiffIntegrator::Step RodasIntegrator::step() {
   s.t1 = t_new_;
   t_ = t_new_;
   y_ = y_new;
+  linearized_ = false;
   Events g = events_at(t_new_, y_new_);
   double first = t_new_;
   s.fired = fired(g, first);

@@ -34,6 +34,12 @@ class RodasIntegrator final : public StiffIntegrator {
   /// One trial step of size h from (t_, y_): y_new and its error estimate; false
   /// when a stage left the system's domain.
   bool attempt(double h, Vec& y_new, Vec& error);
+  /// f, J and f_t at (t_, y_), once per step (a rejected attempt reuses them); false outside
+  /// the domain.
+  bool linearize();
+  /// Solves (I/(gamma h) - J) g = b in place: the LU of the block of the components that are
+  /// not quadratures, then each quadrature q from its row, g_q = gamma h (b_q + sum_k J_qk g_k).
+  void solve(Vec& g, double gamma_h) const;
   double error_norm(const Vec& y_new, const Vec& error) const;
   double accepted_step(Vec& y_new);
   double initial_step();
@@ -57,8 +63,15 @@ class RodasIntegrator final : public StiffIntegrator {
   std::array<Vec, 5> stages_{};
   std::vector<bool> enabled_;
   Events g_{};  // event functions at (t_, y_)
-  bool (*factorize_)(double*, int*) = nullptr;             // LU for this n
+  bool (*factorize_)(double*, int*) = nullptr;             // LU for the m_ coupled components
   void (*solve_)(const double*, const int*, double*) = nullptr;
+  int m_ = 0, quadrature_count_ = 0;
+  std::array<int, capacity> coupled_{}, quadrature_{};  // component indices
+  // The linearization at (t_, y_) and the LU of the coupled block for the step size h_lu_.
+  bool linearized_ = false;
+  Vec f0_{}, dfdt_{};
+  Mat jacobian_{}, lu_{};
+  std::array<int, capacity> pivot_{};
   long steps_ = 0;
   bool first_step_ = true, last_rejected_ = false;
   double h_old_ = 0.0, error_old_ = 0.0;

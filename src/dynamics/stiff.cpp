@@ -40,15 +40,22 @@ int SwappedIndependent::rhs(double s, const double* z, double* dzds) const {
 }
 
 int SwappedIndependent::jacobian(double s, const double* z, double* j, double* dfds) const {
+  Small f;
+  return linearize(s, z, f.data(), j, dfds);
+}
+
+int SwappedIndependent::linearize(double s, const double* z, double* dzds, double* j, double* dfds) const {
   const int n = size();
   Small y, f, rate_row;
   std::copy(z, z + n, y.begin());
   y[static_cast<std::size_t>(index_)] = sign_ * s;
-  int flag = inner_.rhs(z[index_], y.data(), f.data());
-  if (flag == 0) flag = inner_.jacobian(z[index_], y.data(), j, nullptr);  // the inner system is autonomous
+  const int flag = inner_.linearize(z[index_], y.data(), f.data(), j, nullptr);  // the inner system is autonomous
   if (flag != 0) return flag;
-  const double rate = f[static_cast<std::size_t>(index_)];
+  const double rate = f[static_cast<std::size_t>(index_)];  // d y_index / dt
   if (!(std::isfinite(rate) && rate != 0.0)) return 1;
+  for (int i = 0; i < n; ++i) {
+    dzds[i] = i == index_ ? sign_ / rate : sign_ * f[static_cast<std::size_t>(i)] / rate;
+  }
   // With x = y_index and F_i = f_i / f_x (F_x = 1 / f_x): dF_i/dy_k = (J_ik - f_i J_xk / f_x) / f_x
   // for the original components, with f_x replaced by 1 in row x. Column x becomes the
   // time (autonomous: zero) and dF/ds = sign dF/dy_x.
