@@ -95,9 +95,9 @@ class KrijtSystem final : public StiffSystem {
     if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);  // autonomous
     return evaluate(y, f, j);
   }
-  int linearize(double, const double* y, double* f, double* j, double* dfdt) const override {
+  int linearize(double t, const double* y, double* f, double* j, double* dfdt, double* g) const override {
     if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);
-    return evaluate(y, f, j);
+    return evaluate(y, f, j, t, g);
   }
   /// U_CD and U_BD enter no right-hand side.
   unsigned quadratures() const override { return (1u << 3) | (1u << 4); }
@@ -105,10 +105,12 @@ class KrijtSystem final : public StiffSystem {
  private:
   // The right-hand side and, unless j is null, the Jacobian: one evaluation of beta and of
   // the crack law for both (the engine asks for them together at every step).
-  int evaluate(const double* y, double* dydt, double* j) const {
+  // With g, also the events at time t.
+  int evaluate(const double* y, double* dydt, double* j, double t = 0.0, double* g = nullptr) const {
     const Physical x = physical(y);
     if (!in_domain(x)) return 1;  // recoverable: the engine retries a smaller step
     const models::CrackSpeed f = models::crack_speed_function(x.beta, p_.k);
+    if (g != nullptr) events(t, y, x, f.value, g);
     const double fe = models::elastic_force(p_, x.a, x.delta);
     const double fd = models::bulk_dissipative_force(p_, x.a, x.rate);
     const double a_dot = c_ * f.value;
@@ -160,20 +162,24 @@ class KrijtSystem final : public StiffSystem {
   int event_count() const override { return event_count_; }
   void events(double t, const double* y, double* g) const override {
     const Physical x = physical(y);
+    events(t, y, x, phase_ == Phase::closing ? 0.0 : models::crack_speed_function(x.beta, p_.k).value, g);
+  }
+  // The events from the state's beta and crack law f(beta) (unused in the closing phase).
+  void events(double t, const double* y, const Physical& x, double crack_law, double* g) const {
     g[max_compression] = y[1];
     g[breaks] = beta_break_ - x.beta;
     g[sticks] = stick_event_ ? mechanical_energy(y) - sticking_threshold(x) : 1.0;
     switch (phase_) {
       case Phase::time:
         g[phase_change] = x.beta - closing_entry;
-        g[enters_opening] = std::min(opening_entry - x.beta, relative_crack_rate(x) + collapse_entry);
+        g[enters_opening] = std::min(opening_entry - x.beta, relative_crack_rate(x, crack_law) + collapse_entry);
         break;
       case Phase::closing:
         g[phase_change] = closing_exit - x.beta;
         g[enters_opening] = 1.0;
         break;
       case Phase::opening:
-        g[phase_change] = std::max(x.beta - opening_exit, -(relative_crack_rate(x) + collapse_exit));
+        g[phase_change] = std::max(x.beta - opening_exit, -(relative_crack_rate(x, crack_law) + collapse_exit));
         g[enters_opening] = 1.0;
         break;
     }
@@ -183,9 +189,7 @@ class KrijtSystem final : public StiffSystem {
   void set_time_limit(double t) { time_limit_ = t; }
 
   // a'/a per scaled time unit (positive: the contact grows).
-  double relative_crack_rate(const Physical& x) const {
-    return c_ * models::crack_speed_function(x.beta, p_.k).value / x.a * s_.time;
-  }
+  double relative_crack_rate(const Physical& x, double crack_law) const { return c_ * crack_law / x.a * s_.time; }
 
   // The energy below which the grains can never separate [scaled]. U_K + U_E + U_S
   // never increases and equals U_K >= 0 after a separation, so 0 always (docs/decisions.md D10).

@@ -165,7 +165,7 @@ double RodasIntegrator::initial_step() {
 
 bool RodasIntegrator::linearize() {
   if (linearized_) return true;
-  const int flag = system_.linearize(t_, y_.data(), f0_.data(), jacobian_.data(), dfdt_.data());
+  const int flag = system_.linearize(t_, y_.data(), f0_.data(), jacobian_.data(), dfdt_.data(), nullptr);
   if (flag < 0) throw NumericalError("RODAS: unrecoverable failure of the right-hand side");
   linearized_ = flag == 0;
   return linearized_;
@@ -345,8 +345,14 @@ StiffIntegrator::Step RodasIntegrator::step() {
   s.t1 = t_new_;
   t_ = t_new_;
   y_ = y_new;
-  linearized_ = false;
-  Events g = events_at(t_new_, y_new_);
+  // The events at the step's end, and with them the next step's f and J (the same point).
+  Events g{};
+  const int flag = system_.event_count() > 0
+                       ? system_.linearize(t_, y_.data(), f0_.data(), jacobian_.data(), dfdt_.data(), g.data())
+                       : 1;
+  if (flag < 0) throw NumericalError("RODAS: unrecoverable failure of the right-hand side");
+  linearized_ = flag == 0;
+  if (!linearized_) g = events_at(t_new_, y_new_);
   double first = t_new_;
   s.fired = fired(g, first);
   if (!s.fired.empty()) {

@@ -41,15 +41,15 @@ int SwappedIndependent::rhs(double s, const double* z, double* dzds) const {
 
 int SwappedIndependent::jacobian(double s, const double* z, double* j, double* dfds) const {
   Small f;
-  return linearize(s, z, f.data(), j, dfds);
+  return linearize(s, z, f.data(), j, dfds, nullptr);
 }
 
-int SwappedIndependent::linearize(double s, const double* z, double* dzds, double* j, double* dfds) const {
+int SwappedIndependent::linearize(double s, const double* z, double* dzds, double* j, double* dfds, double* g) const {
   const int n = size();
   Small y, f, rate_row;
   std::copy(z, z + n, y.begin());
   y[static_cast<std::size_t>(index_)] = sign_ * s;
-  const int flag = inner_.linearize(z[index_], y.data(), f.data(), j, nullptr);  // the inner system is autonomous
+  const int flag = inner_.linearize(z[index_], y.data(), f.data(), j, nullptr, g);  // the inner system is autonomous
   if (flag != 0) return flag;
   const double rate = f[static_cast<std::size_t>(index_)];  // d y_index / dt
   if (!(std::isfinite(rate) && rate != 0.0)) return 1;

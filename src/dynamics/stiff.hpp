@@ -31,11 +31,14 @@ class StiffSystem {
   /// explicit time derivative d f_i / d t (Rosenbrock methods need it); same
   /// return convention.
   virtual int jacobian(double t, const double* y, double* j, double* dfdt) const = 0;
-  /// rhs and jacobian at one point, in one call: a system whose two share costly work
-  /// (K13's crack law and effective surface energy) computes it once. Same return convention.
-  virtual int linearize(double t, const double* y, double* f, double* j, double* dfdt) const {
-    const int flag = rhs(t, y, f);
-    return flag != 0 ? flag : jacobian(t, y, j, dfdt);
+  /// rhs, jacobian and, unless g is null, the events at one point, in one call: a system
+  /// whose three share costly work (K13's crack law and effective surface energy) does it
+  /// once. Same return convention; on a nonzero return g is undefined.
+  virtual int linearize(double t, const double* y, double* f, double* j, double* dfdt, double* g) const {
+    int flag = rhs(t, y, f);
+    if (flag == 0) flag = jacobian(t, y, j, dfdt);
+    if (flag == 0 && g != nullptr) events(t, y, g);
+    return flag;
   }
   /// The components that enter no right-hand side (zero Jacobian columns), bit i for
   /// component i: quadratures (K13's dissipated energies) and the time of a swapped autonomous
@@ -61,7 +64,7 @@ class SwappedIndependent final : public StiffSystem {
   int size() const override { return inner_.size(); }
   int rhs(double s, const double* z, double* dzds) const override;
   int jacobian(double s, const double* z, double* j, double* dfds) const override;
-  int linearize(double s, const double* z, double* f, double* j, double* dfds) const override;
+  int linearize(double s, const double* z, double* f, double* j, double* dfds, double* g) const override;
   /// The inner system's quadratures and the time (the inner system is autonomous).
   unsigned quadratures() const override { return inner_.quadratures() | (1u << index_); }
   int event_count() const override { return inner_.event_count(); }
