@@ -75,6 +75,19 @@ class KrijtSystem final : public StiffSystem {
     fold_overlap_ = contact::jkr::separation_overlap(j);
     fold_radius_ = contact::jkr::separation_contact_radius(j);
     fold_energy_ = models::contact_energy(p, fold_radius_, fold_overlap_) / s.energy;
+    // The equations in the scaled variables (d, v, alpha) = (delta / L, delta' / g, a / a_s)
+    // with time unit T = L / g, as polynomials with these coefficients (a step evaluates them
+    // seven times: no division but the one of beta).
+    const double e = p.effective_modulus, r = p.effective_radius, gamma = p.surface_energy;
+    const double force = s.time / (p.effective_mass * s.speed);  // a force in scaled d v / d t
+    force_overlap_ = force * 2.0 * e * s.radius * s.length;                        // K13 (2): 2 E* a delta
+    force_cubic_ = force * 2.0 * e / (3.0 * r) * s.radius * s.radius * s.radius;  // K13 (2): 2 E* a^3 / (3R)
+    force_rate_ = force * 2.0 * p.dissipative_constant * e * s.radius * s.speed;    // K13 (19)
+    overlap_radius_ = s.length * r / (s.radius * s.radius);                       // delta R / a^2 -> d q / alpha^2
+    beta_scale_ = e * s.radius * s.radius * s.radius / (2.0 * pi * r * r * gamma);  // K13 (14)
+    crack_ = c_ * s.time / s.radius;                                             // K13 (16)-(17)
+    crack_energy_ = 2.0 * pi * s.radius * gamma * c_ * s.time / s.energy;        // K13 (C.2)
+    bulk_energy_ = 2.0 * p.dissipative_constant * e * s.radius * s.speed * s.speed * s.time / s.energy;  // K13 (C.3)
   }
 
   int size() const override { return 5; }
@@ -107,46 +120,40 @@ class KrijtSystem final : public StiffSystem {
   // the crack law for both (the engine asks for them together at every step).
   // With g, also the events at time t.
   int evaluate(const double* y, double* dydt, double* j, double t = 0.0, double* g = nullptr) const {
-    const Physical x = physical(y);
-    if (!in_domain(x)) return 1;  // recoverable: the engine retries a smaller step
-    const models::CrackSpeed f = models::crack_speed_function(x.beta, p_.k);
-    if (g != nullptr) events(t, y, x, f.value, g);
-    const double fe = models::elastic_force(p_, x.a, x.delta);
-    const double fd = models::bulk_dissipative_force(p_, x.a, x.rate);
-    const double a_dot = c_ * f.value;
-    dydt[0] = y[1];
-    dydt[1] = -(fe + fd) / p_.effective_mass * s_.time / s_.speed;                                  // K13 (20)
-    dydt[2] = a_dot * s_.time / s_.radius;                                                          // K13 (16)-(17)
-    dydt[3] = 2.0 * pi * x.a * p_.surface_energy * (1.0 - x.beta) * a_dot * s_.time / s_.energy;  // K13 (C.2)
-    dydt[4] = fd * x.rate * s_.time / s_.energy;                                                   // K13 (C.3)
+    const double d = y[0], v = y[1], alpha = y[2];
+    if (!(alpha > 0.0)) return 1;  // recoverable: the engine retries a smaller step
+    const double mismatch = alpha * alpha - overlap_radius_ * d;  // (a^2 - delta R) / a_s^2
+    const double beta = beta_scale_ * mismatch * mismatch / alpha;  // K13 (14)
+    if (!(beta > p_.k && beta * p_.k < 1.0)) return 1;
+    const models::CrackSpeed f = models::crack_speed_function(beta, p_.k);
+    if (g != nullptr) events(t, y, Physical{d * s_.length, v * s_.speed, alpha * s_.radius, beta}, f.value, g);
+    dydt[0] = v;
+    dydt[1] = -force_overlap_ * alpha * d + force_cubic_ * alpha * alpha * alpha - force_rate_ * alpha * v;  // K13 (20)
+    dydt[2] = crack_ * f.value;                                                    // K13 (16)-(17)
+    dydt[3] = crack_energy_ * alpha * (1.0 - beta) * f.value;                     // K13 (C.2)
+    dydt[4] = bulk_energy_ * alpha * v * v;                                        // K13 (C.3)
     if (j == nullptr) return 0;
-    const double r = p_.effective_radius, e = p_.effective_modulus, m = p_.effective_mass;
-    const double gamma = p_.surface_energy, a_coef = p_.dissipative_constant;
-    const double mismatch = x.a * x.a - x.delta * r;
-    // d beta / d delta and d beta / d a from K13 (14).
-    const double dbeta_ddelta = -e * mismatch / (pi * x.a * r * gamma);
-    const double dbeta_da = e * mismatch * (3.0 * x.a * x.a + x.delta * r) / (2.0 * pi * x.a * x.a * r * r * gamma);
-    const double da_ddelta = c_ * f.derivative * dbeta_ddelta;
-    const double da_da = c_ * f.derivative * dbeta_da;
-    // Physical Jacobian (columns: delta, rate, a, U_CD, U_BD).
-    double jp[5][5] = {};
-    jp[0][1] = 1.0;
-    jp[1][0] = -2.0 * e * x.a / m;
-    jp[1][1] = -2.0 * a_coef * e * x.a / m;
-    jp[1][2] = -(2.0 * e * (x.delta - x.a * x.a / r) + 2.0 * a_coef * e * x.rate) / m;
-    jp[2][0] = da_ddelta;
-    jp[2][2] = da_da;
-    const double w = 2.0 * pi * gamma;  // U_CD' = w a (1 - beta) a'
-    jp[3][0] = w * x.a * (-dbeta_ddelta * a_dot + (1.0 - x.beta) * da_ddelta);
-    jp[3][2] = w * ((1.0 - x.beta) * a_dot - x.a * dbeta_da * a_dot + x.a * (1.0 - x.beta) * da_da);
-    jp[4][1] = 4.0 * a_coef * e * x.a * x.rate;  // U_BD' = 2 A E* a rate^2
-    jp[4][2] = 2.0 * a_coef * e * x.rate * x.rate;
-    const double scale[5] = {s_.length, s_.speed, s_.radius, s_.energy, s_.energy};
-    for (int i = 0; i < 5; ++i) {
-      for (int k = 0; k < 5; ++k) j[i * 5 + k] = jp[i][k] * s_.time / scale[i] * scale[k];
-    }
+    // d beta / d d and d beta / d alpha from K13 (14).
+    const double dbeta_dd = -2.0 * beta_scale_ * overlap_radius_ * mismatch / alpha;
+    const double dbeta_dalpha = beta_scale_ * mismatch * (3.0 * alpha * alpha + overlap_radius_ * d) / (alpha * alpha);
+    std::fill(j, j + 25, 0.0);  // columns: d, v, alpha, U_CD, U_BD
+    j[0 * 5 + 1] = 1.0;
+    j[1 * 5 + 0] = -force_overlap_ * alpha;
+    j[1 * 5 + 1] = -force_rate_ * alpha;
+    j[1 * 5 + 2] = -force_overlap_ * d + 3.0 * force_cubic_ * alpha * alpha - force_rate_ * v;
+    j[2 * 5 + 0] = crack_ * f.derivative * dbeta_dd;
+    j[2 * 5 + 2] = crack_ * f.derivative * dbeta_dalpha;
+    // U_CD' = k alpha (1 - beta) f(beta)
+    const double along = (1.0 - beta) * f.derivative - f.value;  // d[(1 - beta) f] / d beta
+    j[3 * 5 + 0] = crack_energy_ * alpha * along * dbeta_dd;
+    j[3 * 5 + 2] = crack_energy_ * ((1.0 - beta) * f.value + alpha * along * dbeta_dalpha);
+    j[4 * 5 + 1] = 2.0 * bulk_energy_ * alpha * v;  // U_BD' = k alpha v^2
+    j[4 * 5 + 2] = bulk_energy_ * v * v;
     return 0;
   }
+  double force_overlap_ = 0.0, force_cubic_ = 0.0, force_rate_ = 0.0;  // coefficients of evaluate()
+  double overlap_radius_ = 0.0, beta_scale_ = 0.0;
+  double crack_ = 0.0, crack_energy_ = 0.0, bulk_energy_ = 0.0;
 
  public:
   /// The events, by index.
