@@ -200,35 +200,35 @@ bool RodasIntegrator::attempt(double h, Vec& y_new, Vec& error) {
     lu_[static_cast<std::size_t>(i * m_ + i)] += 1.0 / (C::gamma * h);
   }
   if (!factorize_(lu_.data(), pivot_.data())) return false;
-  const double gh = C::gamma * h;
+  const double gh = C::gamma * h, inv_h = 1.0 / h;
   auto& [g1, g2, g3, g4, g5] = stages_;
   for (int i = 0; i < n; ++i) g1[i] = f0_[i] + h * C::d1 * dfdt[i];
   solve(g1, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a21 * g1[i];
   if (fail(system_.rhs(t_ + C::c2 * h, x.data(), f.data()))) return false;
-  for (int i = 0; i < n; ++i) g2[i] = f[i] + h * C::d2 * dfdt[i] + C::c21 * g1[i] / h;
+  for (int i = 0; i < n; ++i) g2[i] = f[i] + h * C::d2 * dfdt[i] + C::c21 * g1[i] * inv_h;
   solve(g2, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a31 * g1[i] + C::a32 * g2[i];
   if (fail(system_.rhs(t_ + C::c3 * h, x.data(), f.data()))) return false;
-  for (int i = 0; i < n; ++i) g3[i] = f[i] + h * C::d3 * dfdt[i] + (C::c31 * g1[i] + C::c32 * g2[i]) / h;
+  for (int i = 0; i < n; ++i) g3[i] = f[i] + h * C::d3 * dfdt[i] + (C::c31 * g1[i] + C::c32 * g2[i]) * inv_h;
   solve(g3, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a41 * g1[i] + C::a42 * g2[i] + C::a43 * g3[i];
   if (fail(system_.rhs(t_ + C::c4 * h, x.data(), f.data()))) return false;
-  for (int i = 0; i < n; ++i) g4[i] = f[i] + h * C::d4 * dfdt[i] + (C::c41 * g1[i] + C::c42 * g2[i] + C::c43 * g3[i]) / h;
+  for (int i = 0; i < n; ++i) g4[i] = f[i] + h * C::d4 * dfdt[i] + (C::c41 * g1[i] + C::c42 * g2[i] + C::c43 * g3[i]) * inv_h;
   solve(g4, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a51 * g1[i] + C::a52 * g2[i] + C::a53 * g3[i] + C::a54 * g4[i];
   if (fail(system_.rhs(t_ + h, x.data(), f.data()))) return false;
-  for (int i = 0; i < n; ++i) g5[i] = f[i] + (C::c51 * g1[i] + C::c52 * g2[i] + C::c53 * g3[i] + C::c54 * g4[i]) / h;
+  for (int i = 0; i < n; ++i) g5[i] = f[i] + (C::c51 * g1[i] + C::c52 * g2[i] + C::c53 * g3[i] + C::c54 * g4[i]) * inv_h;
   solve(g5, gh);
 
   for (int i = 0; i < n; ++i) x[i] += g5[i];
   if (fail(system_.rhs(t_ + h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) {
-    error[i] = f[i] + (C::c61 * g1[i] + C::c62 * g2[i] + C::c63 * g3[i] + C::c64 * g4[i] + C::c65 * g5[i]) / h;
+    error[i] = f[i] + (C::c61 * g1[i] + C::c62 * g2[i] + C::c63 * g3[i] + C::c64 * g4[i] + C::c65 * g5[i]) * inv_h;
   }
   solve(error, gh);
   for (int i = 0; i < n; ++i) {
@@ -258,10 +258,10 @@ double RodasIntegrator::accepted_step(Vec& y_new) {
       last_rejected_ = true;
       continue;
     }
-    double factor = std::clamp(std::pow(err, 0.25) / safety, max_growth, max_shrink);
+    double factor = std::clamp(std::sqrt(std::sqrt(err)) / safety, max_growth, max_shrink);  // err^(1/4)
     if (err <= 1.0) {
       if (!first_step_) {  // Gustafsson's predictive controller
-        const double predicted = (h_old_ / h) * std::pow(err * err / error_old_, 0.25) / safety;
+        const double predicted = (h_old_ / h) * std::sqrt(std::sqrt(err * err / error_old_)) / safety;
         factor = std::max(factor, std::clamp(predicted, max_growth, max_shrink));
       }
       first_step_ = false;
