@@ -99,16 +99,17 @@ RodasIntegrator::RodasIntegrator(const StiffSystem& system, const std::vector<do
                                  const StiffSettings& settings)
     : system_(system), settings_(settings), n_(system.size()), t_(t0), t_old_(t0), t_new_(t0) {
   if (n_ < 1 || n_ > capacity) throw NumericalError(fmt::format("RODAS: {} components, 1 to {} allowed", n_, capacity));
+  // The trailing run of quadratures is solved from the coupled block before it (a quadrature
+  // among the coupled components is just treated as one of them).
   const unsigned quadratures = system.quadratures();
-  for (int i = 0; i < n_; ++i) {
-    if ((quadratures >> i) & 1u) {
-      quadrature_[static_cast<std::size_t>(quadrature_count_++)] = i;
-    } else {
-      coupled_[static_cast<std::size_t>(m_++)] = i;
-    }
-  }
-  if (m_ == 0) throw NumericalError("RODAS: every component is a quadrature");
+  m_ = n_;
+  while (m_ > 1 && ((quadratures >> (m_ - 1)) & 1u)) --m_;
   std::tie(factorize_, solve_) = linear_algebra(m_, std::make_integer_sequence<int, capacity>{});
+  // The sizes of K13's phases (5 components; 3 coupled in time, 2 in the contact radius)
+  // get a kernel compiled for them; any other system the one with run-time sizes.
+  attempt_ = n_ == 5 && m_ == 3 ? &RodasIntegrator::attempt_sized<5, 3>
+             : n_ == 5 && m_ == 2 ? &RodasIntegrator::attempt_sized<5, 2>
+                                  : &RodasIntegrator::attempt_sized<0, 0>;
   for (int i = 0; i < n_; ++i) y_[i] = y0.at(static_cast<std::size_t>(i));
   y_old_ = y_new_ = y_;
   settings_.absolute_tolerance.resize(static_cast<std::size_t>(n_), settings.relative_tolerance);
@@ -171,21 +172,27 @@ bool RodasIntegrator::linearize() {
   return linearized_;
 }
 
+// Solves (I/(gamma h) - J) g = b in place: the LU of the coupled block, then each trailing
+// quadrature q from its row, g_q = gamma h (b_q + sum_k J_qk g_k) (J_qq' = 0).
+template <int N, int M>
 void RodasIntegrator::solve(Vec& g, double gamma_h) const {
-  Vec b;
-  for (int i = 0; i < m_; ++i) b[static_cast<std::size_t>(i)] = g[static_cast<std::size_t>(coupled_[i])];
-  solve_(lu_.data(), pivot_.data(), b.data());
-  for (int i = 0; i < m_; ++i) g[static_cast<std::size_t>(coupled_[i])] = b[static_cast<std::size_t>(i)];
-  for (int q = 0; q < quadrature_count_; ++q) {
-    const int row = quadrature_[static_cast<std::size_t>(q)];
-    double sum = g[static_cast<std::size_t>(row)];
-    for (int i = 0; i < m_; ++i) sum += jacobian_[static_cast<std::size_t>(row * n_ + coupled_[i])] * b[static_cast<std::size_t>(i)];
-    g[static_cast<std::size_t>(row)] = gamma_h * sum;
+  const int n = N > 0 ? N : n_, m = M > 0 ? M : m_;
+  if constexpr (M > 0) {
+    lu_solve<M>(lu_.data(), pivot_.data(), g.data());
+  } else {
+    solve_(lu_.data(), pivot_.data(), g.data());
+  }
+  for (int q = m; q < n; ++q) {
+    double sum = g[static_cast<std::size_t>(q)];
+    for (int k = 0; k < m; ++k) sum += jacobian_[static_cast<std::size_t>(q * n + k)] * g[static_cast<std::size_t>(k)];
+    g[static_cast<std::size_t>(q)] = gamma_h * sum;
   }
 }
 
-bool RodasIntegrator::attempt(double h, Vec& y_new, Vec& error) {
-  const int n = n_;
+// One trial step; N, M > 0: the sizes fixed at compile time (the loops unroll), 0: n_ and m_.
+template <int N, int M>
+bool RodasIntegrator::attempt_sized(double h, Vec& y_new, Vec& error) {
+  const int n = N > 0 ? N : n_, m = M > 0 ? M : m_;
   Vec f{}, x{};
   auto fail = [](int flag) {
     if (flag < 0) throw NumericalError("RODAS: unrecoverable failure of the right-hand side");
@@ -193,50 +200,55 @@ bool RodasIntegrator::attempt(double h, Vec& y_new, Vec& error) {
   };
   if (!linearize()) return false;
   const Vec& dfdt = dfdt_;
-  for (int i = 0; i < m_; ++i) {
-    for (int k = 0; k < m_; ++k) {
-      lu_[static_cast<std::size_t>(i * m_ + k)] = -jacobian_[static_cast<std::size_t>(coupled_[i] * n + coupled_[k])];
-    }
-    lu_[static_cast<std::size_t>(i * m_ + i)] += 1.0 / (C::gamma * h);
-  }
-  if (!factorize_(lu_.data(), pivot_.data())) return false;
   const double gh = C::gamma * h, inv_h = 1.0 / h;
+  for (int i = 0; i < m; ++i) {
+    for (int k = 0; k < m; ++k) lu_[static_cast<std::size_t>(i * m + k)] = -jacobian_[static_cast<std::size_t>(i * n + k)];
+    lu_[static_cast<std::size_t>(i * m + i)] += 1.0 / gh;
+  }
+  if constexpr (M > 0) {
+    if (!lu_factorize<M>(lu_.data(), pivot_.data())) return false;
+  } else {
+    if (!factorize_(lu_.data(), pivot_.data())) return false;
+  }
   auto& [g1, g2, g3, g4, g5] = stages_;
   for (int i = 0; i < n; ++i) g1[i] = f0_[i] + h * C::d1 * dfdt[i];
-  solve(g1, gh);
+  solve<N, M>(g1, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a21 * g1[i];
   if (fail(system_.rhs(t_ + C::c2 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g2[i] = f[i] + h * C::d2 * dfdt[i] + C::c21 * g1[i] * inv_h;
-  solve(g2, gh);
+  solve<N, M>(g2, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a31 * g1[i] + C::a32 * g2[i];
   if (fail(system_.rhs(t_ + C::c3 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g3[i] = f[i] + h * C::d3 * dfdt[i] + (C::c31 * g1[i] + C::c32 * g2[i]) * inv_h;
-  solve(g3, gh);
+  solve<N, M>(g3, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a41 * g1[i] + C::a42 * g2[i] + C::a43 * g3[i];
   if (fail(system_.rhs(t_ + C::c4 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g4[i] = f[i] + h * C::d4 * dfdt[i] + (C::c41 * g1[i] + C::c42 * g2[i] + C::c43 * g3[i]) * inv_h;
-  solve(g4, gh);
+  solve<N, M>(g4, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a51 * g1[i] + C::a52 * g2[i] + C::a53 * g3[i] + C::a54 * g4[i];
   if (fail(system_.rhs(t_ + h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g5[i] = f[i] + (C::c51 * g1[i] + C::c52 * g2[i] + C::c53 * g3[i] + C::c54 * g4[i]) * inv_h;
-  solve(g5, gh);
+  solve<N, M>(g5, gh);
 
   for (int i = 0; i < n; ++i) x[i] += g5[i];
   if (fail(system_.rhs(t_ + h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) {
     error[i] = f[i] + (C::c61 * g1[i] + C::c62 * g2[i] + C::c63 * g3[i] + C::c64 * g4[i] + C::c65 * g5[i]) * inv_h;
   }
-  solve(error, gh);
+  solve<N, M>(error, gh);
+  bool finite = true;
   for (int i = 0; i < n; ++i) {
     y_new[i] = x[i] + error[i];
-    if (!std::isfinite(y_new[i])) return false;
+    finite = finite && std::isfinite(y_new[i]);
   }
-  return true;
+  return finite;
 }
+
+bool RodasIntegrator::attempt(double h, Vec& y_new, Vec& error) { return (this->*attempt_)(h, y_new, error); }
 
 // One accepted step from (t_, y_) (step-size control of Hairer & Wanner IV (8.21) with
 // Gustafsson's predictive controller): its size, and the new state in y_new.

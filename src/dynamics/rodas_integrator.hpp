@@ -37,8 +37,11 @@ class RodasIntegrator final : public StiffIntegrator {
   /// f, J and f_t at (t_, y_), once per step (a rejected attempt reuses them); false outside
   /// the domain.
   bool linearize();
-  /// Solves (I/(gamma h) - J) g = b in place: the LU of the block of the components that are
-  /// not quadratures, then each quadrature q from its row, g_q = gamma h (b_q + sum_k J_qk g_k).
+  template <int N, int M>
+  bool attempt_sized(double h, Vec& y_new, Vec& error);
+  bool (RodasIntegrator::*attempt_)(double, Vec&, Vec&) = nullptr;
+  /// Solves (I/(gamma h) - J) g = b in place.
+  template <int N, int M>
   void solve(Vec& g, double gamma_h) const;
   double error_norm(const Vec& y_new, const Vec& error) const;
   double accepted_step(Vec& y_new);
@@ -65,9 +68,8 @@ class RodasIntegrator final : public StiffIntegrator {
   Events g_{};  // event functions at (t_, y_)
   bool (*factorize_)(double*, int*) = nullptr;             // LU for the m_ coupled components
   void (*solve_)(const double*, const int*, double*) = nullptr;
-  int m_ = 0, quadrature_count_ = 0;
-  std::array<int, capacity> coupled_{}, quadrature_{};  // component indices
-  // The linearization at (t_, y_) and the LU of the coupled block for the step size h_lu_.
+  int m_ = 0;  // the coupled components 0..m_-1; m_..n_-1 are quadratures (StiffSystem::quadratures)
+  // The linearization at (t_, y_), and the LU of the coupled block of the last attempt.
   bool linearized_ = false;
   Vec f0_{}, dfdt_{};
   Mat jacobian_{}, lu_{};
