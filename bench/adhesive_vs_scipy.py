@@ -11,6 +11,9 @@ crack races, see SwappedIndependent). Errors are measured against bounce's CVODE
 tolerance 1e-12; scipy's tolerance is lowered until its error is at most bounce's, so the
 times compare at equal accuracy.
 Prints Markdown tables (recorded in docs/benchmarks.md).
+
+    adhesive_vs_scipy.py [BUILD]          the tables of single collisions
+    adhesive_vs_scipy.py BUILD curve      a 40-velocity curve, in-process on both sides
 """
 import json
 import math
@@ -270,8 +273,48 @@ def scipy_at_matched_accuracy(method, r, v, tvis, ref, target):
     return tol, best, abs(e - ref)
 
 
+def curve(build):
+    """The 40-velocity K13 curve (T_vis = 1e-11 s, 0.1-100 m/s geometric, sticking and bouncing
+    collisions) in-process on both sides, one thread: bounce.curve (RODAS, its default tolerance)
+    against the scipy LSODA loop at the loosest tolerance whose largest COR error over the
+    curve is at most bounce's. Both errors against bounce's CVODE engine at 1e-12."""
+    sys.path.insert(0, f"{build}/python")
+    import bounce
+    r, tvis = 2.0353e-6, 1e-11
+    velocities = np.geomspace(0.1, 100.0, 40)
+    pair = bounce.Pair(material="water-ice", radius=r)
+    model = bounce.Model("krijt", tvis=tvis)
+    reference = bounce.curve(pair, bounce.Model("krijt", tvis=tvis, stiff_engine="cvode", adhesive_tolerance=1e-12),
+                             velocities)["cor"]
+    ours, cor = math.inf, None
+    for _ in range(5):
+        start = time.perf_counter()
+        cor = bounce.curve(pair, model, velocities)["cor"]
+        ours = min(ours, time.perf_counter() - start)
+    ours_error = float(np.max(np.abs(cor - reference)))
+    sticks = int(np.sum(cor == 0.0))
+    print(f"K13 curve, T_vis = {tvis:g} s, {len(velocities)} velocities 0.1-100 m/s ({sticks} stick), in-process, one thread:")
+    print()
+    print("| side | tolerance | time | per collision | largest COR error | ratio |")
+    print("|---|---|---|---|---|---|")
+    print(f"| bounce (RODAS) | default 1e-8 | {ours * 1e3:.1f} ms | {ours / len(velocities) * 1e3:.3f} ms | "
+          f"{ours_error:.1e} | 1 |")
+    for tol in (1e-7, 1e-8, 1e-9, 1e-10, 1e-11):
+        start = time.perf_counter()
+        theirs = np.array([K13(r, v, tvis).run("LSODA", tol) for v in velocities])
+        seconds = time.perf_counter() - start
+        error = float(np.max(np.abs(theirs - reference)))
+        print(f"| scipy LSODA | {tol:g} | {seconds * 1e3:.0f} ms | {seconds / len(velocities) * 1e3:.2f} ms | "
+              f"{error:.1e} | {seconds / ours:.0f}x |")
+        if error <= ours_error:
+            break
+
+
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
+    if len(sys.argv) > 2 and sys.argv[2] == "curve":
+        curve(build)
+        return
     raw = subprocess.run([f"{build}/bin/bench_adhesive", "--benchmark_format=json", "--benchmark_min_time=0.2"],
                          capture_output=True, text=True, check=True).stdout
     runs = json.loads(raw)["benchmarks"]

@@ -105,11 +105,6 @@ RodasIntegrator::RodasIntegrator(const StiffSystem& system, const std::vector<do
   m_ = n_;
   while (m_ > 1 && ((quadratures >> (m_ - 1)) & 1u)) --m_;
   std::tie(factorize_, solve_) = linear_algebra(m_, std::make_integer_sequence<int, capacity>{});
-  // The sizes of K13's phases (5 components; 3 coupled in time, 2 in the contact radius)
-  // get a kernel compiled for them; any other system the one with run-time sizes.
-  attempt_ = n_ == 5 && m_ == 3 ? &RodasIntegrator::attempt_sized<5, 3>
-             : n_ == 5 && m_ == 2 ? &RodasIntegrator::attempt_sized<5, 2>
-                                  : &RodasIntegrator::attempt_sized<0, 0>;
   for (int i = 0; i < n_; ++i) y_[i] = y0.at(static_cast<std::size_t>(i));
   y_old_ = y_new_ = y_;
   settings_.absolute_tolerance.resize(static_cast<std::size_t>(n_), settings.relative_tolerance);
@@ -174,25 +169,17 @@ bool RodasIntegrator::linearize() {
 
 // Solves (I/(gamma h) - J) g = b in place: the LU of the coupled block, then each trailing
 // quadrature q from its row, g_q = gamma h (b_q + sum_k J_qk g_k) (J_qq' = 0).
-template <int N, int M>
 void RodasIntegrator::solve(Vec& g, double gamma_h) const {
-  const int n = N > 0 ? N : n_, m = M > 0 ? M : m_;
-  if constexpr (M > 0) {
-    lu_solve<M>(lu_.data(), pivot_.data(), g.data());
-  } else {
-    solve_(lu_.data(), pivot_.data(), g.data());
-  }
-  for (int q = m; q < n; ++q) {
+  solve_(lu_.data(), pivot_.data(), g.data());
+  for (int q = m_; q < n_; ++q) {
     double sum = g[static_cast<std::size_t>(q)];
-    for (int k = 0; k < m; ++k) sum += jacobian_[static_cast<std::size_t>(q * n + k)] * g[static_cast<std::size_t>(k)];
+    for (int k = 0; k < m_; ++k) sum += jacobian_[static_cast<std::size_t>(q * n_ + k)] * g[static_cast<std::size_t>(k)];
     g[static_cast<std::size_t>(q)] = gamma_h * sum;
   }
 }
 
-// One trial step; N, M > 0: the sizes fixed at compile time (the loops unroll), 0: n_ and m_.
-template <int N, int M>
-bool RodasIntegrator::attempt_sized(double h, Vec& y_new, Vec& error) {
-  const int n = N > 0 ? N : n_, m = M > 0 ? M : m_;
+bool RodasIntegrator::attempt(double h, Vec& y_new, Vec& error) {
+  const int n = n_, m = m_;
   Vec f{}, x{};
   auto fail = [](int flag) {
     if (flag < 0) throw NumericalError("RODAS: unrecoverable failure of the right-hand side");
@@ -205,41 +192,37 @@ bool RodasIntegrator::attempt_sized(double h, Vec& y_new, Vec& error) {
     for (int k = 0; k < m; ++k) lu_[static_cast<std::size_t>(i * m + k)] = -jacobian_[static_cast<std::size_t>(i * n + k)];
     lu_[static_cast<std::size_t>(i * m + i)] += 1.0 / gh;
   }
-  if constexpr (M > 0) {
-    if (!lu_factorize<M>(lu_.data(), pivot_.data())) return false;
-  } else {
-    if (!factorize_(lu_.data(), pivot_.data())) return false;
-  }
+  if (!factorize_(lu_.data(), pivot_.data())) return false;
   auto& [g1, g2, g3, g4, g5] = stages_;
   for (int i = 0; i < n; ++i) g1[i] = f0_[i] + h * C::d1 * dfdt[i];
-  solve<N, M>(g1, gh);
+  solve(g1, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a21 * g1[i];
   if (fail(system_.rhs(t_ + C::c2 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g2[i] = f[i] + h * C::d2 * dfdt[i] + C::c21 * g1[i] * inv_h;
-  solve<N, M>(g2, gh);
+  solve(g2, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a31 * g1[i] + C::a32 * g2[i];
   if (fail(system_.rhs(t_ + C::c3 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g3[i] = f[i] + h * C::d3 * dfdt[i] + (C::c31 * g1[i] + C::c32 * g2[i]) * inv_h;
-  solve<N, M>(g3, gh);
+  solve(g3, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a41 * g1[i] + C::a42 * g2[i] + C::a43 * g3[i];
   if (fail(system_.rhs(t_ + C::c4 * h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g4[i] = f[i] + h * C::d4 * dfdt[i] + (C::c41 * g1[i] + C::c42 * g2[i] + C::c43 * g3[i]) * inv_h;
-  solve<N, M>(g4, gh);
+  solve(g4, gh);
 
   for (int i = 0; i < n; ++i) x[i] = y_[i] + C::a51 * g1[i] + C::a52 * g2[i] + C::a53 * g3[i] + C::a54 * g4[i];
   if (fail(system_.rhs(t_ + h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) g5[i] = f[i] + (C::c51 * g1[i] + C::c52 * g2[i] + C::c53 * g3[i] + C::c54 * g4[i]) * inv_h;
-  solve<N, M>(g5, gh);
+  solve(g5, gh);
 
   for (int i = 0; i < n; ++i) x[i] += g5[i];
   if (fail(system_.rhs(t_ + h, x.data(), f.data()))) return false;
   for (int i = 0; i < n; ++i) {
     error[i] = f[i] + (C::c61 * g1[i] + C::c62 * g2[i] + C::c63 * g3[i] + C::c64 * g4[i] + C::c65 * g5[i]) * inv_h;
   }
-  solve<N, M>(error, gh);
+  solve(error, gh);
   bool finite = true;
   for (int i = 0; i < n; ++i) {
     y_new[i] = x[i] + error[i];
@@ -247,8 +230,6 @@ bool RodasIntegrator::attempt_sized(double h, Vec& y_new, Vec& error) {
   }
   return finite;
 }
-
-bool RodasIntegrator::attempt(double h, Vec& y_new, Vec& error) { return (this->*attempt_)(h, y_new, error); }
 
 // One accepted step from (t_, y_) (step-size control of Hairer & Wanner IV (8.21) with
 // Gustafsson's predictive controller): its size, and the new state in y_new.

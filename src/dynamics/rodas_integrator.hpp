@@ -37,11 +37,7 @@ class RodasIntegrator final : public StiffIntegrator {
   /// f, J and f_t at (t_, y_), once per step (a rejected attempt reuses them); false outside
   /// the domain.
   bool linearize();
-  template <int N, int M>
-  bool attempt_sized(double h, Vec& y_new, Vec& error);
-  bool (RodasIntegrator::*attempt_)(double, Vec&, Vec&) = nullptr;
   /// Solves (I/(gamma h) - J) g = b in place.
-  template <int N, int M>
   void solve(Vec& g, double gamma_h) const;
   double error_norm(const Vec& y_new, const Vec& error) const;
   double accepted_step(Vec& y_new);
