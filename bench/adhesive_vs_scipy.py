@@ -274,14 +274,14 @@ def scipy_at_matched_accuracy(method, r, v, tvis, ref, target):
 
 
 def curve(build):
-    """The 40-velocity K13 curve (T_vis = 1e-11 s, 0.1-100 m/s geometric, sticking and bouncing
-    collisions) in-process on both sides, one thread: bounce.curve (RODAS, its default tolerance)
+    """The 40-velocity K13 curve (T_vis = 1e-11 s, 0.3-100 m/s geometric, sticking and bouncing
+    collisions; below 0.25 m/s the scipy side's closing phase runs out of its span) in-process on both sides, one thread: bounce.curve (RODAS, its default tolerance)
     against the scipy LSODA loop at the loosest tolerance whose largest COR error over the
     curve is at most bounce's. Both errors against bounce's CVODE engine at 1e-12."""
     sys.path.insert(0, f"{build}/python")
     import bounce
     r, tvis = 2.0353e-6, 1e-11
-    velocities = np.geomspace(0.1, 100.0, 40)
+    velocities = np.geomspace(0.3, 100.0, 40)
     pair = bounce.Pair(material="water-ice", radius=r)
     model = bounce.Model("krijt", tvis=tvis)
     reference = bounce.curve(pair, bounce.Model("krijt", tvis=tvis, stiff_engine="cvode", adhesive_tolerance=1e-12),
@@ -293,7 +293,8 @@ def curve(build):
         ours = min(ours, time.perf_counter() - start)
     ours_error = float(np.max(np.abs(cor - reference)))
     sticks = int(np.sum(cor == 0.0))
-    print(f"K13 curve, T_vis = {tvis:g} s, {len(velocities)} velocities 0.1-100 m/s ({sticks} stick), in-process, one thread:")
+    print(f"K13 curve, T_vis = {tvis:g} s, {len(velocities)} velocities 0.3-100 m/s ({sticks} stick), in-process, one thread:")
+    print("(scipy's errors leave out the speeds where its run ends in a break while the grains approach)")
     print()
     print("| side | tolerance | time | per collision | largest COR error | ratio |")
     print("|---|---|---|---|---|---|")
@@ -303,7 +304,10 @@ def curve(build):
         start = time.perf_counter()
         theirs = np.array([K13(r, v, tvis).run("LSODA", tol) for v in velocities])
         seconds = time.perf_counter() - start
-        error = float(np.max(np.abs(theirs - reference)))
+        # A break while the grains approach (the neck pulled them back) ends the scipy run with a
+        # negative COR; bounce follows them into their next contact (at 1.79 m/s they stick): the
+        # errors compare the other speeds.
+        error = float(np.max(np.abs(theirs - reference)[theirs >= 0.0]))
         print(f"| scipy LSODA | {tol:g} | {seconds * 1e3:.0f} ms | {seconds / len(velocities) * 1e3:.2f} ms | "
               f"{error:.1e} | {seconds / ours:.0f}x |")
         if error <= ours_error:
