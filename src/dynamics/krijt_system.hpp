@@ -96,11 +96,8 @@ class KrijtSystem final : public StiffSystem {
     double delta, rate, a, beta;
   };
   Physical physical(const double* y) const {
-    Physical x{y[0] * s_.length, y[1] * s_.speed, y[2] * s_.radius, 0.0};
-    x.beta = x.a > 0.0 ? models::effective_surface_energy_ratio(p_, x.a, x.delta) : 0.0;
-    return x;
+    return {y[0] * s_.length, y[1] * s_.speed, y[2] * s_.radius, y[2] > 0.0 ? beta_of(y[0], y[2]) : 0.0};
   }
-  bool in_domain(const Physical& x) const { return x.a > 0.0 && x.beta > p_.k && x.beta < 1.0 / p_.k; }
 
   int rhs(double, const double* y, double* dydt) const override { return evaluate(y, dydt, nullptr); }
   int jacobian(double, const double* y, double* j, double* dfdt) const override {
@@ -123,7 +120,7 @@ class KrijtSystem final : public StiffSystem {
     const double d = y[0], v = y[1], alpha = y[2];
     if (!(alpha > 0.0)) return 1;  // recoverable: the engine retries a smaller step
     const double mismatch = alpha * alpha - overlap_radius_ * d;  // (a^2 - delta R) / a_s^2
-    const double beta = beta_scale_ * mismatch * mismatch / alpha;  // K13 (14)
+    const double beta = beta_of(d, alpha);
     if (!(beta > p_.k && beta * p_.k < 1.0)) return 1;
     const models::CrackSpeed f = models::crack_speed_function(beta, p_.k);
     if (g != nullptr) events(t, y, Physical{d * s_.length, v * s_.speed, alpha * s_.radius, beta}, f.value, g);
@@ -150,6 +147,11 @@ class KrijtSystem final : public StiffSystem {
     j[4 * 5 + 1] = 2.0 * bulk_energy_ * alpha * v;  // U_BD' = k alpha v^2
     j[4 * 5 + 2] = bulk_energy_ * v * v;
     return 0;
+  }
+  // K13 (14) in the scaled state (one formula for the equations and the events).
+  double beta_of(double d, double alpha) const {
+    const double mismatch = alpha * alpha - overlap_radius_ * d;  // (a^2 - delta R) / a_s^2
+    return beta_scale_ * mismatch * mismatch / alpha;
   }
   double force_overlap_ = 0.0, force_cubic_ = 0.0, force_rate_ = 0.0;  // coefficients of evaluate()
   double overlap_radius_ = 0.0, beta_scale_ = 0.0;
