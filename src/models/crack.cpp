@@ -110,7 +110,6 @@ CrackSpeed reference_law(double beta) {
 }  // namespace
 
 CrackSpeed crack_speed_function(double beta, double k) {  // K13 (16)-(17) at any k
-  if (k == crack_reference_k) return reference_law(beta);  // c = 1: the map is the identity
   const CrackBeta r = reference_beta(beta, k);
   return crack_speed_at_k(reference_law(r.beta), beta, r);
 }

@@ -64,6 +64,7 @@ inline CrackBeta reference_beta(double beta, double k) {
   // y = (1 - beta) / (1 - k) below 1, (1 - 1/beta) / (1 - k) above, is the same at k and at the
   // reference k: c = (1 - k_ref) / (1 - k) carries 1 - beta (or 1 - 1/beta) from one to the other.
   const double c = (1.0 - crack_reference_k) / (1.0 - k);
+  if (c == 1.0) return {beta, c};  // K13's own k: the identity, exactly (1 - (1 - beta) is not)
   if (beta <= 1.0) return {1.0 - c * (1.0 - beta), c};
   const double u = 1.0 - c * (1.0 - 1.0 / beta), beta_ref = 1.0 / u;
   return {beta_ref, c};
@@ -72,6 +73,7 @@ inline CrackBeta reference_beta(double beta, double k) {
 inline CrackSpeed crack_speed_at_k(const CrackSpeed& f, double beta, const CrackBeta& r) {
   // Below 1: f = (b_r / b) f_r(b_r), b_r = 1 - c (1 - b): df/db = ((c - 1)/b^2) f_r + (b_r/b) c f_r'.
   // Above 1: f = (b / b_r) f_r(b_r), 1/b_r = 1 - c (1 - 1/b): df/db = (1 - c) f_r + c (b_r/b) f_r'.
+  if (r.c == 1.0) return f;
   const double c = r.c, ratio = r.beta / beta;
   if (beta <= 1.0) return {ratio * f.value, (c - 1.0) / (beta * beta) * f.value + ratio * c * f.derivative};
   return {f.value / ratio, (1.0 - c) * f.value + c * ratio * f.derivative};
