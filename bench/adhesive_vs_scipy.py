@@ -275,9 +275,10 @@ def scipy_at_matched_accuracy(method, r, v, tvis, ref, target):
 
 def curve(build):
     """The 40-velocity K13 curve (T_vis = 1e-11 s, 0.3-100 m/s geometric, sticking and bouncing
-    collisions; below 0.25 m/s the scipy side's closing phase runs out of its span) in-process on both sides, one thread: bounce.curve (RODAS, its default tolerance)
-    against the scipy LSODA loop at the loosest tolerance whose largest COR error over the
-    curve is at most bounce's. Both errors against bounce's CVODE engine at 1e-12."""
+    collisions; below 0.25 m/s the scipy side's closing phase runs out of its span), in-process
+    on both sides, one thread: bounce.curve (RODAS, its default tolerance) against the scipy
+    LSODA loop at the loosest tolerance whose largest COR error over the curve is at most
+    bounce's. Both errors against bounce's CVODE engine at 1e-12."""
     sys.path.insert(0, f"{build}/python")
     import bounce
     r, tvis = 2.0353e-6, 1e-11

@@ -96,17 +96,16 @@ class KrijtSystem final : public StiffSystem {
     double delta, rate, a, beta;
   };
   Physical physical(const double* y) const {
-    return {y[0] * s_.length, y[1] * s_.speed, y[2] * s_.radius, y[2] > 0.0 ? beta_of(y[0], y[2]) : 0.0};
+    return {y[0] * s_.length, y[1] * s_.speed, y[2] * s_.radius, y[2] > 0.0 ? beta_of(mismatch_of(y[0], y[2]), y[2]) : 0.0};
   }
 
   int rhs(double, const double* y, double* dydt) const override { return evaluate(y, dydt, nullptr); }
-  int jacobian(double, const double* y, double* j, double* dfdt) const override {
+  int jacobian(double t, const double* y, double* j, double* dfdt) const override {
     double f[5];
-    if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);  // autonomous
-    return evaluate(y, f, j);
+    return linearize(t, y, f, j, dfdt, nullptr);
   }
   int linearize(double t, const double* y, double* f, double* j, double* dfdt, double* g) const override {
-    if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);
+    if (dfdt != nullptr) std::fill(dfdt, dfdt + 5, 0.0);  // autonomous
     return evaluate(y, f, j, t, g);
   }
   /// U_CD and U_BD enter no right-hand side.
@@ -119,8 +118,8 @@ class KrijtSystem final : public StiffSystem {
   int evaluate(const double* y, double* dydt, double* j, double t = 0.0, double* g = nullptr) const {
     const double d = y[0], v = y[1], alpha = y[2];
     if (!(alpha > 0.0)) return 1;  // recoverable: the engine retries a smaller step
-    const double mismatch = alpha * alpha - overlap_radius_ * d;  // (a^2 - delta R) / a_s^2
-    const double beta = beta_of(d, alpha);
+    const double mismatch = mismatch_of(d, alpha);
+    const double beta = beta_of(mismatch, alpha);
     if (!(beta > p_.k && beta * p_.k < 1.0)) return 1;
     const models::CrackSpeed f = models::crack_speed_function(beta, p_.k);
     if (g != nullptr) events(t, y, Physical{d * s_.length, v * s_.speed, alpha * s_.radius, beta}, f.value, g);
@@ -148,11 +147,10 @@ class KrijtSystem final : public StiffSystem {
     j[4 * 5 + 2] = bulk_energy_ * v * v;
     return 0;
   }
-  // K13 (14) in the scaled state (one formula for the equations and the events).
-  double beta_of(double d, double alpha) const {
-    const double mismatch = alpha * alpha - overlap_radius_ * d;  // (a^2 - delta R) / a_s^2
-    return beta_scale_ * mismatch * mismatch / alpha;
-  }
+  // K13 (14) in the scaled state (one formula for the equations and the events):
+  // beta = beta_scale (alpha^2 - q d)^2 / alpha, the mismatch (a^2 - delta R) / a_s^2 = alpha^2 - q d.
+  double mismatch_of(double d, double alpha) const { return alpha * alpha - overlap_radius_ * d; }
+  double beta_of(double mismatch, double alpha) const { return beta_scale_ * mismatch * mismatch / alpha; }
   double force_overlap_ = 0.0, force_cubic_ = 0.0, force_rate_ = 0.0;  // coefficients of evaluate()
   double overlap_radius_ = 0.0, beta_scale_ = 0.0;
   double crack_ = 0.0, crack_energy_ = 0.0, bulk_energy_ = 0.0;
