@@ -17,6 +17,7 @@ Prints Markdown tables (recorded in docs/benchmarks.md).
 """
 import json
 import math
+import os
 import subprocess
 import sys
 import time
@@ -317,7 +318,14 @@ def curve(build):
 
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
-    if len(sys.argv) > 2 and sys.argv[2] == "curve":
+    if len(sys.argv) > 3 or (len(sys.argv) == 3 and sys.argv[2] != "curve"):
+        print(f"usage: adhesive_vs_scipy.py [BUILD [curve]]; got {' '.join(map(repr, sys.argv[1:]))}", file=sys.stderr)
+        sys.exit(2)
+    if not os.path.isfile(f"{build}/bin/bounce"):
+        print(f"adhesive_vs_scipy.py: BUILD = {build!r} holds no bin/bounce (a configured and built bounce build)",
+              file=sys.stderr)
+        sys.exit(2)
+    if len(sys.argv) == 3:
         curve(build)
         return
     raw = subprocess.run([f"{build}/bin/bench_adhesive", "--benchmark_format=json", "--benchmark_min_time=0.2"],
