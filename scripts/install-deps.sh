@@ -9,9 +9,9 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libboost-dev libsundials-dev libcli11-dev libtomlplusplus-dev
   nlohmann-json3-dev libfmt-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev
-  libnlopt-cxx-dev libopenmpi-dev openmpi-bin
+  libnlopt-cxx-dev libopenmpi-dev openmpi-bin libhdf5-dev gfortran
   pybind11-dev python3 python3-dev python3-numpy python3-matplotlib
-  python3-scipy python3-pytest python3-emcee
+  python3-scipy python3-pytest python3-emcee python3-h5py
   "$@"
 )
 

@@ -29,6 +29,8 @@ def layer_of(repo, path):
     for name, folder in FRONT_ENDS.items():
         if rel.startswith(folder + "/"):
             return name
+    if rel.startswith("include/bounce/") and "/" not in rel[len("include/bounce/"):]:
+        return "api"  # the plain C headers beside the layers (bounce/atlas.h): the front door's
     for prefix in ("include/bounce/", "src/"):
         if rel.startswith(prefix):
             first = rel[len(prefix):].split("/")[0]

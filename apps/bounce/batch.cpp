@@ -18,11 +18,9 @@
 #include "bounce/api/front_door.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
+#include "mpi.hpp"
 #include "output.hpp"
 
-#ifdef BOUNCE_HAVE_MPI
-#include <mpi.h>
-#endif
 
 namespace bounce::cli {
 
@@ -133,68 +131,6 @@ void save(const std::string& dir, const Unit& u, const std::string& text) {
   std::filesystem::rename(temporary, path);
 }
 
-#ifdef BOUNCE_HAVE_MPI
-// Whether an MPI launcher (mpirun/mpiexec of Open MPI, MPICH, PMIx) started this process.
-bool launched_by_mpi() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"}) {
-    if (std::getenv(name) != nullptr) return true;
-  }
-  return false;
-}
-#endif
-
-struct Mpi {
-  int rank = 0, size = 1;
-#ifdef BOUNCE_HAVE_MPI
-  bool started = false, active = false;
-  // A plain `bounce fit --batch` is one rank without MPI: a singleton MPI_Init starts Open MPI's
-  // orted for nothing, and its allocations are reported as leaks under LeakSanitizer.
-  Mpi() {
-    int initialised = 0;
-    MPI_Initialized(&initialised);
-    if (!initialised && !launched_by_mpi()) return;
-    if (!initialised) {
-      MPI_Init(nullptr, nullptr);
-      started = true;
-    }
-    active = true;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-  }
-  ~Mpi() {
-    if (started) MPI_Finalize();
-  }
-  int min(int value) const {
-    if (!active) return value;
-    int out = 0;
-    MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    return out;
-  }
-  long sum(long value) const {
-    if (!active) return value;
-    long out = 0;
-    MPI_Allreduce(&value, &out, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
-    return out;
-  }
-  void send(const std::string& text, int tag) const {
-    MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, tag, MPI_COMM_WORLD);
-  }
-  std::string receive(int source, int tag) const {
-    MPI_Status status;
-    MPI_Probe(source, tag, MPI_COMM_WORLD, &status);
-    int n = 0;
-    MPI_Get_count(&status, MPI_CHAR, &n);
-    std::string text(static_cast<std::size_t>(n), '\0');
-    MPI_Recv(text.data(), n, MPI_CHAR, source, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    return text;
-  }
-#else
-  int min(int value) const { return value; }
-  long sum(long value) const { return value; }
-#endif
-  Mpi(const Mpi&) = delete;
-  Mpi& operator=(const Mpi&) = delete;
-};
 
 #ifdef BOUNCE_HAVE_MPI
 // An error as text that rank 0 raises again as the same kind, with the same fields, so that

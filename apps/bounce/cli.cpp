@@ -18,6 +18,7 @@
 
 #include "bounce/core/suggest.hpp"
 #include "bounce/core/version.hpp"
+#include "atlas.hpp"
 #include "commands.hpp"
 #include "completion.hpp"
 #include "output.hpp"
@@ -141,6 +142,8 @@ int run(int argc, const char* const* argv) {
     commands.push_back(add_command(app, spec));
     names.push_back(spec.name);
   }
+  for (Command& c : add_atlas_commands(app)) commands.push_back(std::move(c));
+  names.push_back("atlas");
   const CLI::App* completion = add_completion_command(app);
   names.push_back(completion->get_name());
   if (argc <= 1) {  // `bounce` alone introduces itself: what it is and its commands
@@ -162,7 +165,9 @@ int run(int argc, const char* const* argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ExtrasError&) {
-    std::cerr << "bounce: error: " << unexpected_argument(app, std::as_const(app).get_subcommands({})) << '\n';
+    std::vector<const CLI::App*> apps;  // every command's, `atlas build` and its kin included
+    for (const Command& c : commands) apps.push_back(c.app);
+    std::cerr << "bounce: error: " << unexpected_argument(app, apps) << '\n';
     return 2;
   } catch (const CLI::RequiredError&) {
     std::cerr << "bounce: error: " << missing_command(app, argc, argv, names) << '\n';

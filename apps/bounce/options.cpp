@@ -84,9 +84,18 @@ bool* Options::add_flag(const std::string& name, const std::string& help) {
   return value.get();
 }
 
-std::string* Options::add_text(const std::string& name, const std::string& help, const std::string& placeholder) {
+std::string* Options::add_text(const std::string& name, const std::string& help, const std::string& placeholder,
+                               const std::string& short_name) {
   auto& value = text_[name] = std::make_unique<std::string>();
-  options_[name] = app_->add_option(option_name(name), *value, help)->group("Output")->type_name(placeholder);
+  const std::string names = short_name.empty() ? option_name(name) : short_name + "," + option_name(name);
+  options_[name] = app_->add_option(names, *value, help)->group("Output")->type_name(placeholder);
+  own_.insert(name);
+  return value.get();
+}
+
+std::string* Options::add_positional(const std::string& name, const std::string& help) {
+  auto& value = text_[name] = std::make_unique<std::string>();
+  options_[name] = app_->add_option(name, *value, help)->type_name("FILE");
   own_.insert(name);
   return value.get();
 }

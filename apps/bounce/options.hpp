@@ -25,7 +25,10 @@ class Options {
   /// A flag that only the CLI has (output format, progress).
   bool* add_flag(const std::string& name, const std::string& help);
   /// A text option that only the CLI has (an input file, a C prefix); `placeholder` in --help.
-  std::string* add_text(const std::string& name, const std::string& help, const std::string& placeholder);
+  std::string* add_text(const std::string& name, const std::string& help, const std::string& placeholder,
+                        const std::string& short_name = {});
+  /// A positional argument that only the CLI has (an input file).
+  std::string* add_positional(const std::string& name, const std::string& help);
   /// Was the CLI's own option given?
   bool given(const std::string& name) const;
   /// The value as typed ("given" for a flag), for messages.

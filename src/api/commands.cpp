@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "binding.hpp"
+#include "bounce/api/atlas.hpp"
 #include "bounce/contact/law.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
@@ -93,7 +94,10 @@ const std::vector<CommandSpec>& commands() {
   return table;
 }
 
-const CommandSpec& command(std::string_view name) { return find_named(commands(), name, "command"); }
+const CommandSpec& command(std::string_view name) {
+  if (name.starts_with("atlas ")) return atlas_command(name);  // `bounce atlas WORD`
+  return find_named(commands(), name, "command");
+}
 
 namespace {
 // A keyword among `names` (the registry's), with its default.

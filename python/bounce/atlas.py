@@ -1,0 +1,153 @@
+"""The collision atlas (docs/atlas.md): eps, sticking and v_stick over radius and speed, read
+from a file of `bounce atlas build`, looked up with numpy broadcasting::
+
+    import numpy as np, bounce.atlas
+    atlas = bounce.atlas.open("ice.h5", model="krijt")
+    a = np.geomspace(1e-7, 1e-3, 100)                      # radii [m]
+    atlas.cor(a[:, None], a[None, :], 3.0)                 # (100, 100) eps at 3 m/s
+    atlas.p_stick(a[:, None], a[None, :], sigma_v=1.0)     # sticking probability, Maxwellian speeds
+
+Radii in m (R2 = np.inf: a wall of the atlas's second material), speeds in m/s. A value
+outside the atlas raises ValueError naming it and the atlas's range: never an extrapolation.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Callable, Optional, Union
+
+import numpy as np
+
+from . import _bounce
+
+__all__ = ["open", "Atlas", "maxwell_cdf"]
+
+Distribution = Union[str, Callable[[np.ndarray, np.ndarray], np.ndarray]]
+
+
+def maxwell_cdf(v, sigma):
+    """P(speed <= v) for a Maxwellian relative speed of scale sigma: the pdf
+    sqrt(2/pi) v^2 / sigma^3 exp(-v^2 / (2 sigma^2)), mean speed sigma sqrt(8/pi)."""
+    x = np.asarray(v, dtype=float) / np.asarray(sigma, dtype=float)
+    from scipy.special import erf
+
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = erf(x / math.sqrt(2.0)) - math.sqrt(2.0 / math.pi) * x * np.exp(-0.5 * x * x)
+    return np.where(np.isinf(x), 1.0, out)
+
+
+class Atlas:
+    """An atlas file's lookups. Its description (model, parameters with units, materials,
+    ranges, grid, measured errors, bounce version) is `describe()`."""
+
+    def __init__(self, core: _bounce.Atlas, path: str):
+        self._core = core
+        self.path = path
+
+    @property
+    def model(self) -> str:
+        return self._core.model
+
+    @property
+    def cor_error(self) -> float:
+        """The stated bound on |eps_atlas - eps_collide| (twice the largest measured)."""
+        return self._core.cor_error
+
+    @property
+    def v_stick_error(self) -> float:
+        """The stated bound on the relative error of v_stick (inside the atlas's speeds)."""
+        return self._core.v_stick_error
+
+    @property
+    def velocity_range(self) -> tuple:
+        return (self._core.velocity_min, self._core.velocity_max)
+
+    @property
+    def radius_range(self) -> tuple:
+        """The range of the reduced radius R_eff = R1 R2 / (R1 + R2) [m]."""
+        return (self._core.radius_min, self._core.radius_max)
+
+    def describe(self) -> dict:
+        return self._core.describe()
+
+    def cor(self, radius1, radius2, velocity):
+        """eps (0 where the grains stick), broadcasting like a ufunc."""
+        return self._core.cor(radius1, radius2, velocity)
+
+    def sticks(self, radius1, radius2, velocity):
+        return self._core.sticks(radius1, radius2, velocity)
+
+    def v_stick(self, radius1, radius2):
+        """The sticking velocity [m/s]; inf where the grains stick at every speed."""
+        return self._core.v_stick(radius1, radius2)
+
+    def contact_time(self, radius1, radius2, velocity):
+        """[s]; NaN where the grains stick (they stay together)."""
+        return self._core.contact_time(radius1, radius2, velocity)
+
+    def bulk_fraction(self, radius1, radius2, velocity):
+        """Bulk viscous loss / initial kinetic energy; NaN where the grains stick."""
+        return self._core.bulk_fraction(radius1, radius2, velocity)
+
+    def crack_fraction(self, radius1, radius2, velocity):
+        """Loss at the crack tip / initial kinetic energy; NaN where the grains stick."""
+        return self._core.crack_fraction(radius1, radius2, velocity)
+
+    def p_stick(self, radius1, radius2, sigma_v, distribution: Distribution = "maxwell",
+                max_outside: float = 1e-6, nodes: int = 64):
+        """The probability that the pair sticks when its relative speed is drawn from
+        `distribution` with scale sigma_v [m/s]: "maxwell" (maxwell_cdf), or a callable
+        pdf(v, sigma_v) integrated over [0, v_stick] (Gauss-Legendre, `nodes` points).
+
+        The atlas knows the outcome only inside its speeds (and below them where v_stick is
+        above its lowest speed): where more than `max_outside` of the distribution lies
+        elsewhere, ValueError names sigma_v and the range."""
+        sigma = np.asarray(sigma_v, dtype=float)
+        if np.any(~np.isfinite(sigma)) or np.any(sigma <= 0):
+            bad = sigma[~(np.isfinite(sigma) & (sigma > 0))].flat[0]
+            raise ValueError(f"sigma_v = {bad} is invalid: expected a speed scale > 0 [m/s]")
+        vs = np.asarray(self.v_stick(radius1, radius2), dtype=float)
+        lo, hi = self.velocity_range
+        if distribution == "maxwell":
+            cdf = maxwell_cdf
+        elif callable(distribution):
+            cdf = _cdf_of(distribution, nodes)
+        else:
+            raise ValueError(f"distribution = {distribution!r} is invalid: expected \"maxwell\" or a "
+                             "callable pdf(v, sigma_v)")
+        # Above its top speed the atlas has not seen the outcome; below its lowest speed it
+        # knows it wherever v_stick is above it (they stick there: one threshold per pair).
+        outside = (1.0 - cdf(hi, sigma)) + np.where(vs < lo, cdf(lo, sigma), 0.0)
+        if np.any(outside > max_outside):
+            worst = np.broadcast_to(sigma, np.shape(outside))[np.argmax(outside)] if np.ndim(outside) else sigma
+            raise ValueError(
+                f"sigma_v = {float(np.max(worst))} is invalid: expected a speed distribution inside the atlas's "
+                f"{lo} .. {hi} m/s (a fraction {float(np.max(outside)):.3g} > max_outside = {max_outside} lies "
+                "outside; build an atlas over a wider range of speeds)")
+        return np.where(np.isinf(vs), 1.0, cdf(np.where(np.isinf(vs), 0.0, vs), sigma))
+
+
+def _cdf_of(pdf, nodes: int):
+    x, w = np.polynomial.legendre.leggauss(nodes)
+
+    def cdf(v, sigma):
+        v = np.asarray(v, dtype=float)
+        sigma = np.asarray(sigma, dtype=float)
+        v_b, s_b = np.broadcast_arrays(v, sigma)
+        half = 0.5 * v_b[..., None]
+        speeds = half * (x + 1.0)
+        values = np.asarray(pdf(speeds, s_b[..., None]), dtype=float)
+        if values.shape != speeds.shape or np.any(~np.isfinite(values)) or np.any(values < 0):
+            raise ValueError("distribution = (the callable) is invalid: expected a pdf(v, sigma_v) with finite "
+                             "values >= 0 that broadcasts over arrays of speeds")
+        return np.sum(values * w, axis=-1) * half[..., 0]
+
+    return cdf
+
+
+def open(path: str, model: Optional[str] = None) -> Atlas:  # noqa: A001  (bounce.atlas.open, as the issue names it)
+    """Reads an atlas file. With `model`, a file of another model is refused (ValueError), as
+    is a file that is not an atlas or was changed after bounce wrote it (its checksum)."""
+    if not isinstance(path, str):
+        raise TypeError(f"path = {path!r} is invalid: expected a file name (str)")
+    return Atlas(_bounce.open_atlas(path, model), path)

@@ -1,0 +1,63 @@
+// The collision atlas in Python (docs/atlas.md): the library's Atlas with numpy lookups that
+// broadcast (R1, R2, v) like ufuncs; python/bounce/atlas.py adds p_stick and the docs.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <limits>
+#include <optional>
+
+#include "bounce/analysis/atlas.hpp"
+#include "bounce/api/atlas.hpp"
+#include "objects.hpp"
+
+namespace bounce::python {
+
+namespace {
+
+using analysis::Atlas;
+
+analysis::Atlas open(const std::string& path, const std::optional<std::string>& model) {
+  return analysis::read_atlas(path, model.value_or(""));
+}
+
+}  // namespace
+
+void bind_atlas(py::module_& m) {
+  py::class_<Atlas>(m, "Atlas", "A collision atlas read from a file of `bounce atlas build` (docs/atlas.md).")
+      .def("cor", py::vectorize([](const Atlas* a, double r1, double r2, double v) { return a->cor(r1, r2, v); }),
+           py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
+      .def("sticks", py::vectorize([](const Atlas* a, double r1, double r2, double v) { return a->sticks(r1, r2, v); }),
+           py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
+      .def("v_stick", py::vectorize([](const Atlas* a, double r1, double r2) { return a->v_stick(r1, r2); }),
+           py::arg("radius1"), py::arg("radius2"))
+      .def(
+          "contact_time",
+          py::vectorize([](const Atlas* a, double r1, double r2, double v) {
+            return a->at({r1, r2, v}).contact_time.value_or(std::numeric_limits<double>::quiet_NaN());
+          }),
+          py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
+      .def(
+          "bulk_fraction",
+          py::vectorize([](const Atlas* a, double r1, double r2, double v) {
+            return a->at({r1, r2, v}).bulk_fraction.value_or(std::numeric_limits<double>::quiet_NaN());
+          }),
+          py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
+      .def(
+          "crack_fraction",
+          py::vectorize([](const Atlas* a, double r1, double r2, double v) {
+            return a->at({r1, r2, v}).crack_fraction.value_or(std::numeric_limits<double>::quiet_NaN());
+          }),
+          py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
+      .def("describe", [](const Atlas& a) { return to_python(api::atlas_record(a)); })
+      .def_readonly("model", &Atlas::model)
+      .def_readonly("radius_min", &Atlas::radius_min)
+      .def_readonly("radius_max", &Atlas::radius_max)
+      .def_readonly("velocity_min", &Atlas::velocity_min)
+      .def_readonly("velocity_max", &Atlas::velocity_max)
+      .def_property_readonly("cor_error", [](const Atlas& a) { return a.errors.cor; })
+      .def_property_readonly("v_stick_error", [](const Atlas& a) { return a.errors.v_stick; });
+  m.def("open_atlas", &open, py::arg("path"), py::arg("model") = std::nullopt,
+        "Reads an atlas (ValueError for a file that is not one, was changed, or is of another model).");
+}
+
+}  // namespace bounce::python

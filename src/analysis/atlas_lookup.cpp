@@ -1,0 +1,216 @@
+// The atlas's lookups (docs/atlas.md): tensor cubic Lagrange interpolation on the uniform
+// (ln R_eff, ln rho_eff, ln(v - v_s)) grid, with the stencils chosen once per cell.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "bounce/analysis/atlas.hpp"
+#include "bounce/core/error.hpp"
+
+namespace bounce::analysis {
+
+namespace {
+
+// Cubic Lagrange weights on the nodes 0, 1, 2, 3 at s (s in [0, 3]).
+void lagrange4(double s, double w[4]) noexcept {
+  const double a = s, b = s - 1.0, c = s - 2.0, d = s - 3.0;
+  w[0] = -b * c * d / 6.0;
+  w[1] = a * c * d / 2.0;
+  w[2] = -a * b * d / 2.0;
+  w[3] = a * b * c / 6.0;
+}
+
+// The cell of a coordinate u on an axis of n >= 4 nodes (u clamped into [0, n - 1]).
+std::size_t cell_of(double u, std::size_t n) noexcept {
+  if (!(u > 0.0)) return 0;
+  const auto i = static_cast<std::size_t>(u);
+  return std::min(i, n - 2);
+}
+
+double relative_slack(double x) { return 1e-12 * std::abs(x); }
+
+}  // namespace
+
+double effective_density(double density1, double density2, double radius1, double radius2) {
+  if (std::isinf(radius2)) return density1;
+  // rho_eff = 3 m_eff / (4 pi R_eff^3) with m_i = 4 pi rho_i R_i^3 / 3
+  const double r13 = radius1 * radius1 * radius1, r23 = radius2 * radius2 * radius2, s = radius1 + radius2;
+  return density1 * density2 * s * s * s / (density1 * r13 + density2 * r23);
+}
+
+struct Atlas::Stencil {
+  std::size_t bx = 0, by = 0;
+  double wx[4] = {}, wy[4] = {};
+};
+
+double Atlas::node_v_stick(std::size_t ix, std::size_t iy) const {
+  const double w = stick_ratio[ix * y.count + iy];
+  if (!can_stick) return 0.0;
+  return w > 0.0 ? reference_velocity(x.value(ix), y.value(iy)) / w : std::numeric_limits<double>::infinity();
+}
+
+void Atlas::prepare(const std::string& source) {
+  const auto bad = [&](const std::string& what) {
+    throw InvalidArgument(source, "(the file)", "an atlas written by bounce atlas build: " + what);
+  };
+  if (x.count < 4 || y.count < 4 || z.count < 4) bad("every axis has at least 4 nodes");
+  for (const AtlasAxis* a : {&x, &y, &z}) {
+    if (!std::isfinite(a->start) || !(a->step > 0.0) || !std::isfinite(a->end())) bad("finite axes with steps > 0");
+  }
+  const std::size_t nxy = x.count * y.count;
+  if (stick_ratio.size() != nxy || defined.size() != nxy) bad("one sticking velocity per (R_eff, rho_eff) node");
+  if (!std::isfinite(ln_v_reference)) bad("a finite reference velocity");
+  if (values.size() != atlas_field_count * points()) bad(fmt::format("{} values per grid point", atlas_field_count));
+  for (double v : values) {
+    if (!std::isfinite(v)) bad("finite values");
+  }
+  for (std::size_t i = 0; i < nxy; ++i) {
+    if (!std::isfinite(stick_ratio[i]) || defined[i] > 1) bad("finite sticking velocities and 0/1 flags");
+    if (!can_stick && defined[i] != 1) bad("a model that cannot stick has collisions at every node");
+  }
+  if (!(radius_min > 0.0 && radius_max >= radius_min && velocity_min > 0.0 && velocity_max >= velocity_min &&
+        density_min > 0.0 && density_max >= density_min && std::isfinite(radius_max) && std::isfinite(velocity_max) &&
+        std::isfinite(density_max))) {
+    bad("positive, finite, ordered ranges");
+  }
+  inverse_step_ = {1.0 / x.step, 1.0 / y.step, 1.0 / z.step};
+  lo_x_ = std::log(radius_min) - relative_slack(std::log(radius_min)) - 1e-12;
+  hi_x_ = std::log(radius_max) + relative_slack(std::log(radius_max)) + 1e-12;
+  if (lo_x_ < x.start - 1e-9 || hi_x_ > x.end() + 1e-9 || std::log(density_min) < y.start - 1e-6 ||
+      std::log(density_max) > y.end() + 1e-6) {
+    bad("grids that cover the stated ranges");
+  }
+}
+
+// The centred 4x4 stencil of the cell that holds (ln R_eff, ln rho_eff) (one-sided at the edges).
+void Atlas::locate(double ln_r, double ln_rho, Stencil& s) const noexcept {
+  const double ux = (ln_r - x.start) * inverse_step_[0], uy = (ln_rho - y.start) * inverse_step_[1];
+  const std::size_t i = cell_of(ux, x.count), j = cell_of(uy, y.count);
+  s.bx = std::min(i > 0 ? i - 1 : 0, x.count - 4);
+  s.by = std::min(j > 0 ? j - 1 : 0, y.count - 4);
+  lagrange4(ux - static_cast<double>(s.bx), s.wx);
+  lagrange4(uy - static_cast<double>(s.by), s.wy);
+}
+
+// v_s = v_ref / w, w by the centred bicubic; +inf where w <= 0 (beyond the radius where v_s diverges).
+double Atlas::v_stick_at(const Stencil& s, double ln_r, double ln_rho) const noexcept {
+  if (!can_stick) return 0.0;
+  double w = 0.0;
+  for (std::size_t a = 0; a < 4; ++a) {
+    const double* row = &stick_ratio[(s.bx + a) * y.count + s.by];
+    w += s.wx[a] * (s.wy[0] * row[0] + s.wy[1] * row[1] + s.wy[2] * row[2] + s.wy[3] * row[3]);
+  }
+  return w > 0.0 ? reference_velocity(ln_r, ln_rho) / w : std::numeric_limits<double>::infinity();
+}
+
+double Atlas::field_at(const Stencil& s, AtlasField f, double zq) const noexcept {
+  double uz = (zq - z.start) * inverse_step_[2];
+  uz = std::clamp(uz, 0.0, static_cast<double>(z.count - 1));  // below: the sqrt law's constant c
+  const std::size_t k = cell_of(uz, z.count);
+  const std::size_t bz = std::min(k > 0 ? k - 1 : 0, z.count - 4);
+  double wz[4];
+  lagrange4(uz - static_cast<double>(bz), wz);
+  const std::size_t nz = z.count, ny = y.count;
+  const double* base = &values[(static_cast<std::size_t>(f) * x.count * ny) * nz];
+  double sum = 0.0;
+  for (std::size_t a = 0; a < 4; ++a) {
+    double row_sum = 0.0;
+    for (std::size_t b = 0; b < 4; ++b) {
+      const double* p = base + ((s.bx + a) * ny + s.by + b) * nz + bz;
+      row_sum += s.wy[b] * (wz[0] * p[0] + wz[1] * p[1] + wz[2] * p[2] + wz[3] * p[3]);
+    }
+    sum += s.wx[a] * row_sum;
+  }
+  return sum;
+}
+
+std::array<double, 2> Atlas::reduced(double radius1, double radius2) const {
+  if (!(radius1 > 0.0) || !std::isfinite(radius1)) {
+    throw InvalidArgument("radius1", fmt::format("{}", radius1), "a finite radius > 0 [m]");
+  }
+  if (!(radius2 > 0.0) || std::isnan(radius2)) {
+    throw InvalidArgument("radius2", fmt::format("{}", radius2), "a radius > 0 [m] (inf: a wall)");
+  }
+  const double r = std::isinf(radius2) ? radius1 : radius1 * radius2 / (radius1 + radius2);
+  const double ln_r = std::log(r);
+  if (ln_r < lo_x_ || ln_r > hi_x_) {
+    throw InvalidArgument("radius", fmt::format("{} (R_eff = {} m)", std::isinf(radius2) ? fmt::format("{}", radius1) : fmt::format("{}, {}", radius1, radius2), r),
+                          fmt::format("a reduced radius inside the atlas's {} .. {} m (no extrapolation)", radius_min,
+                                      radius_max));
+  }
+  return {r, effective_density(material1.density, material2.density, radius1, radius2)};
+}
+
+AtlasValue Atlas::evaluate(double radius1, double radius2, double velocity, bool fields) const {
+  const auto [r, rho] = reduced(radius1, radius2);
+  if (!(velocity >= velocity_min * (1 - 1e-12) && velocity <= velocity_max * (1 + 1e-12))) {
+    throw InvalidArgument("velocity", fmt::format("{}", velocity),
+                          fmt::format("an impact speed inside the atlas's {} .. {} m/s (no extrapolation)",
+                                      velocity_min, velocity_max));
+  }
+  const double ln_r = std::log(r), ln_rho = std::clamp(std::log(rho), y.start, y.end());
+  Stencil s;
+  locate(ln_r, ln_rho, s);
+  AtlasValue out;
+  out.v_stick = v_stick_at(s, ln_r, ln_rho);
+  if (velocity <= out.v_stick) {
+    out.sticks = true;
+    return out;
+  }
+  const double gap = velocity - out.v_stick, zq = std::log(gap);
+  out.cor = std::clamp(field_at(s, AtlasField::cor_factor, zq) * std::sqrt(gap / velocity), 0.0, 1.0);
+  if (fields) {
+    out.contact_time = std::exp(field_at(s, AtlasField::ln_contact_time, zq));
+    out.bulk_fraction = std::clamp(field_at(s, AtlasField::bulk_fraction, zq), 0.0, 1.0);
+    out.crack_fraction = std::clamp(field_at(s, AtlasField::crack_fraction, zq), 0.0, 1.0);
+  }
+  return out;
+}
+
+AtlasValue Atlas::at(const AtlasQuery& q) const { return evaluate(q.radius1, q.radius2, q.velocity, true); }
+double Atlas::cor(double radius1, double radius2, double velocity) const {
+  return evaluate(radius1, radius2, velocity, false).cor;
+}
+bool Atlas::sticks(double radius1, double radius2, double velocity) const {
+  return evaluate(radius1, radius2, velocity, false).sticks;
+}
+
+double Atlas::v_stick(double radius1, double radius2) const {
+  const auto [r, rho] = reduced(radius1, radius2);
+  const double ln_r = std::log(r), ln_rho = std::clamp(std::log(rho), y.start, y.end());
+  Stencil s;
+  locate(ln_r, ln_rho, s);
+  return v_stick_at(s, ln_r, ln_rho);
+}
+
+double Atlas::v_stick_unchecked(double radius1, double radius2) const noexcept {
+  const double r = std::isinf(radius2) ? radius1 : radius1 * radius2 / (radius1 + radius2);
+  const double ln_r = std::log(r);
+  if (!(ln_r >= lo_x_ && ln_r <= hi_x_)) return std::numeric_limits<double>::quiet_NaN();
+  const double ln_rho =
+      std::clamp(std::log(effective_density(material1.density, material2.density, radius1, radius2)), y.start, y.end());
+  Stencil s;
+  locate(ln_r, ln_rho, s);
+  return v_stick_at(s, ln_r, ln_rho);
+}
+
+double Atlas::cor_unchecked(double radius1, double radius2, double velocity) const noexcept {
+  const double r = std::isinf(radius2) ? radius1 : radius1 * radius2 / (radius1 + radius2);
+  const double ln_r = std::log(r);
+  if (!(ln_r >= lo_x_ && ln_r <= hi_x_ && velocity >= velocity_min * (1 - 1e-12) &&
+        velocity <= velocity_max * (1 + 1e-12))) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const double ln_rho =
+      std::clamp(std::log(effective_density(material1.density, material2.density, radius1, radius2)), y.start, y.end());
+  Stencil s;
+  locate(ln_r, ln_rho, s);
+  const double vs = v_stick_at(s, ln_r, ln_rho);
+  if (velocity <= vs) return 0.0;
+  const double gap = velocity - vs;
+  return std::clamp(field_at(s, AtlasField::cor_factor, std::log(gap)) * std::sqrt(gap / velocity), 0.0, 1.0);
+}
+
+}  // namespace bounce::analysis

@@ -1,0 +1,110 @@
+"""The collision atlas from Python (docs/atlas.md): bounce.atlas.open, numpy broadcasting to
+(Nr, Nm, Nm) grids, agreement with bounce.collide within the stored error, p_stick against its
+closed form, the file read by h5py (self-describing), and the one rule for bad input.
+
+Run by `make test` through CTest (PYTHONPATH=build/python, BOUNCE_CLI=build/bin/bounce).
+"""
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import bounce
+import bounce.atlas
+
+CLI = os.environ.get("BOUNCE_CLI", "build/bin/bounce")
+RADII = (2e-6, 1e-5)  # grain radii whose R_eff lies in the atlas's 1-10 um for any pair
+
+
+@pytest.fixture(scope="module")
+def path(tmp_path_factory):
+    out = str(tmp_path_factory.mktemp("atlas") / "ice.h5")
+    subprocess.run([CLI, "atlas", "build", "--model", "krijt", "--tvis", "1e-11", "--materials", "water-ice",
+                    "--radius", "1e-6:1e-5:4", "--velocity", "0.3:20:5", "--tol", "1e-3", "-o", out],
+                   check=True, capture_output=True)
+    return out
+
+
+@pytest.fixture(scope="module")
+def atlas(path):
+    return bounce.atlas.open(path, model="krijt")
+
+
+def test_lookups_broadcast_to_coagulation_grids(atlas):
+    nr, nm = 3, 20
+    a = np.geomspace(*RADII, nm)
+    r1 = np.broadcast_to(a[None, :, None], (nr, nm, nm))
+    r2 = np.broadcast_to(a[None, None, :], (nr, nm, nm))
+    v = np.linspace(1.0, 15.0, nr)[:, None, None]
+    cor = atlas.cor(r1, r2, v)
+    assert cor.shape == (nr, nm, nm)
+    assert np.all((cor >= 0) & (cor <= 1))
+    np.testing.assert_array_equal(cor, cor.transpose(0, 2, 1))  # like materials: symmetric in R1, R2
+    sticks = atlas.sticks(r1, r2, v)
+    assert sticks.dtype == bool and np.array_equal(sticks, cor == 0)
+    assert atlas.v_stick(a[:, None], a[None, :]).shape == (nm, nm)
+    assert isinstance(atlas.cor(3e-6, 4e-6, 5.0), float)
+
+
+def test_agrees_with_collide_within_the_stored_error(atlas):
+    rng = np.random.default_rng(3)
+    model = bounce.Model("krijt", tvis=1e-11)
+    for _ in range(40):
+        r1, r2 = np.exp(rng.uniform(*np.log(RADII), 2))
+        v = math.exp(rng.uniform(math.log(0.3), math.log(20.0)))
+        pair = bounce.Pair(material="water-ice", radius=r1, radius2=r2)
+        direct = bounce.collide(pair, model, v)
+        if (direct["outcome"] == "stick") != bool(atlas.sticks(r1, r2, v)):
+            assert abs(v / atlas.v_stick(r1, r2) - 1) <= atlas.v_stick_error
+            continue
+        assert abs(atlas.cor(r1, r2, v) - direct["cor"]) <= atlas.cor_error
+
+
+def test_p_stick_is_the_maxwellian_probability_below_v_stick(atlas):
+    r1, r2, sigma = 3e-6, 5e-6, 3.0
+    x = atlas.v_stick(r1, r2) / sigma
+    closed = math.erf(x / math.sqrt(2)) - math.sqrt(2 / math.pi) * x * math.exp(-x * x / 2)
+    assert atlas.p_stick(r1, r2, sigma) == pytest.approx(closed, rel=1e-12)
+    # The same through a user pdf (Gauss-Legendre, 64 points: exact to round-off for this smooth pdf).
+    def maxwell(v, s):
+        return math.sqrt(2 / math.pi) * v * v / s**3 * np.exp(-v * v / (2 * s * s))
+    assert atlas.p_stick(r1, r2, sigma, distribution=maxwell) == pytest.approx(closed, rel=1e-9)
+    grid = atlas.p_stick(np.full((2, 4, 1), r1), np.full((2, 1, 4), r2), np.array([2.5, 3.0])[:, None, None])
+    assert grid.shape == (2, 4, 4) and np.all((grid >= 0) & (grid <= 1))
+
+
+def test_the_file_describes_itself_to_h5py(path, atlas):
+    h5py = pytest.importorskip("h5py")
+    with h5py.File(path, "r") as f:
+        assert f.attrs["format"] == b"bounce-atlas" and f.attrs["model"] == b"krijt"
+        assert f["parameters/tvis"].attrs["value"] == b"1e-11" and f["parameters/tvis"].attrs["unit"] == b"s"
+        assert f["materials/body1/density"].attrs["unit"] == b"kg/m^3"
+        assert f["grid/values"].shape[0] == 4
+        assert f["errors/cor"][0] == atlas.cor_error
+    assert atlas.describe()["model"] == "krijt"
+
+
+@pytest.mark.parametrize("call, name", [
+    (lambda a: a.cor(3e-6, 4e-6, 50.0), "velocity"),
+    (lambda a: a.cor(1e-7, 1e-7, 1.0), "radius"),
+    (lambda a: a.v_stick(-1.0, 2e-6), "radius1"),
+    (lambda a: a.p_stick(3e-6, 4e-6, 0.0), "sigma_v"),
+    (lambda a: a.p_stick(3e-6, 4e-6, 30.0), "sigma_v"),   # much of it above 20 m/s
+    (lambda a: a.p_stick(3e-6, 4e-6, 5.0, distribution="gauss"), "distribution"),
+])
+def test_bad_queries_name_the_value_and_the_range(atlas, call, name):
+    with pytest.raises(ValueError, match=rf"^{name} = .+ is invalid: expected .+"):
+        call(atlas)
+
+
+def test_other_files_are_refused(path, tmp_path):
+    with pytest.raises(ValueError, match="model = viscoelastic is invalid"):
+        bounce.atlas.open(path, model="viscoelastic")
+    text = tmp_path / "data.csv"
+    text.write_text("velocity,cor\n1,0.5\n")
+    with pytest.raises(ValueError, match="is invalid: expected an atlas"):
+        bounce.atlas.open(str(text))
+    with pytest.raises(TypeError, match="path = 3 is invalid"):
+        bounce.atlas.open(3)
