@@ -6,7 +6,10 @@ Run by `make test` through CTest (PYTHONPATH=build/python, BOUNCE_CLI=build/bin/
 """
 import math
 import os
+import shutil
+import signal
 import subprocess
+import time
 
 import numpy as np
 import pytest
@@ -108,3 +111,48 @@ def test_other_files_are_refused(path, tmp_path):
         bounce.atlas.open(str(text))
     with pytest.raises(TypeError, match="path = 3 is invalid"):
         bounce.atlas.open(3)
+
+
+BUILD = ["atlas", "build", "--model", "krijt", "--tvis", "1e-11", "--materials", "water-ice",
+         "--radius", "1e-6:1e-5:4", "--velocity", "0.3:20:5", "--tol", "1e-3"]
+# As root, OpenMPI's documented switches (the CI runs as root).
+MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def _values(path):
+    h5py = pytest.importorskip("h5py")
+    with h5py.File(path, "r") as f:
+        return f.attrs["checksum"], f["grid/values"][()]
+
+
+@pytest.mark.skipif(shutil.which("mpirun") is None, reason="OpenMPI's mpirun is not installed")
+def test_two_mpi_ranks_build_the_same_atlas(path, tmp_path):
+    out = str(tmp_path / "ranks.h5")
+    r = subprocess.run(["mpirun", "--oversubscribe", "-np", "2", CLI, *BUILD, "--threads", "1", "-o", out],
+                       capture_output=True, text=True, env=MPI_ENV)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.count("written to") == 1  # rank 0 alone writes and reports
+    (sum_ranks, ranks), (sum_alone, alone) = _values(out), _values(path)
+    assert sum_ranks == sum_alone
+    np.testing.assert_array_equal(ranks, alone)
+
+
+def test_an_interrupted_build_leaves_no_atlas_and_resumes(path, tmp_path):
+    out = tmp_path / "cut.h5"
+    run = subprocess.Popen([CLI, *BUILD, "-o", str(out)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    cache = tmp_path / "cut.h5.partial"
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and run.poll() is None:
+        if cache.exists() and cache.stat().st_size > 20000:
+            break
+        time.sleep(0.05)
+    run.send_signal(signal.SIGINT)
+    _, err = run.communicate(timeout=60)
+    assert run.returncode == 130, err
+    assert not out.exists() and not (tmp_path / "cut.h5.writing").exists()
+    done = sum(1 for line in cache.read_text().splitlines() if line.startswith(("c ", "s ")))
+    assert done > 10
+    again = subprocess.run([CLI, *BUILD, "-o", str(out), "--progress"], capture_output=True, text=True)
+    assert again.returncode == 0, again.stderr
+    assert not cache.exists()  # gone once the atlas is written
+    np.testing.assert_array_equal(_values(str(out))[1], _values(path)[1])
