@@ -50,13 +50,14 @@ typedef struct {
 } bounce_atlas_ranges;
 void bounce_atlas_get_ranges(const bounce_atlas *atlas, bounce_atlas_ranges *out);
 
-/* The raw grid (docs/atlas.md, "Format"): axes x = ln R_eff, y = ln rho_eff,
- * z = ln(v - v_stick), each start + i step; stick_ratio (nx, ny) w = v_ref / v_stick with
+/* The raw grid (docs/atlas.md, "Format"): axes x = ln R_eff (its nodes x_nodes, ascending,
+ * refined where needed), y = ln rho_eff and z = ln(v - v_stick) (each start + i step); stick_ratio (nx, ny) w = v_ref / v_stick with
  * v_ref = exp(ln_v_reference - 5/6 x - y/2); values (4, nx, ny, nz), z fastest: eps sqrt(v /
  * (v - v_stick)), ln contact time, bulk and crack fractions. The pointers live as long as the atlas. */
 typedef struct {
   size_t nx, ny, nz;
-  double x_start, x_step, y_start, y_step, z_start, z_step;
+  const double *x_nodes;
+  double y_start, y_step, z_start, z_step;
   double ln_v_reference;
   int can_stick;
   const double *stick_ratio;

@@ -20,7 +20,7 @@ import numpy as np
 
 from . import _bounce
 
-__all__ = ["open", "Atlas", "maxwell_cdf"]
+__all__ = ["open", "Atlas", "maxwell_cdf", "plot_map"]
 
 Distribution = Union[str, Callable[[np.ndarray, np.ndarray], np.ndarray]]
 
@@ -119,9 +119,9 @@ class Atlas:
         # knows it wherever v_stick is above it (they stick there: one threshold per pair).
         outside = (1.0 - cdf(hi, sigma)) + np.where(vs < lo, cdf(lo, sigma), 0.0)
         if np.any(outside > max_outside):
-            worst = np.broadcast_to(sigma, np.shape(outside))[np.argmax(outside)] if np.ndim(outside) else sigma
+            worst = np.broadcast_to(sigma, np.shape(outside)).flat[int(np.argmax(outside))]
             raise ValueError(
-                f"sigma_v = {float(np.max(worst))} is invalid: expected a speed distribution inside the atlas's "
+                f"sigma_v = {float(worst)} is invalid: expected a speed distribution inside the atlas's "
                 f"{lo} .. {hi} m/s (a fraction {float(np.max(outside)):.3g} > max_outside = {max_outside} lies "
                 "outside; build an atlas over a wider range of speeds)")
         return np.where(np.isinf(vs), 1.0, cdf(np.where(np.isinf(vs), 0.0, vs), sigma))
@@ -151,3 +151,35 @@ def open(path: str, model: Optional[str] = None) -> Atlas:  # noqa: A001  (bounc
     if not isinstance(path, str):
         raise TypeError(f"path = {path!r} is invalid: expected a file name (str)")
     return Atlas(_bounce.open_atlas(path, model), path)
+
+
+def plot_map(atlas: Atlas, wall: bool = False, points: int = 200, ax=None):
+    """The atlas as a map: eps over the grain radius and the impact speed (equal grains of the
+    atlas's first material, or grains on a wall), sticking collisions in grey, and the v_stick
+    line. Returns the Axes (`.figure.savefig(...)` writes it)."""
+    import matplotlib.pyplot as plt
+
+    lo, hi = atlas.radius_range
+    # R_eff = a / 2 for equal grains, a on a wall: grain radii whose R_eff spans the atlas.
+    radii = np.geomspace(lo, hi, points) * (1.0 if wall else 2.0)
+    speeds = np.geomspace(*atlas.velocity_range, points)
+    r2 = np.inf if wall else radii[None, :]
+    cor = atlas.cor(radii[None, :], r2, speeds[:, None])
+    v_stick = atlas.v_stick(radii, np.inf if wall else radii)
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6.4, 4.8))
+    shown = np.ma.masked_where(cor <= 0.0, cor)
+    cmap = plt.get_cmap("viridis").copy()
+    cmap.set_bad("0.8")
+    mesh = ax.pcolormesh(radii, speeds, shown, cmap=cmap, vmin=0.0, vmax=1.0, shading="auto")
+    inside = np.isfinite(v_stick) & (v_stick <= atlas.velocity_range[1])
+    ax.plot(radii[inside], v_stick[inside], color="white", lw=1.5, label="sticking velocity")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("grain radius [m]" + (" (on a wall)" if wall else " (two equal grains)"))
+    ax.set_ylabel("impact speed [m/s]")
+    ax.set_title(f"{atlas.model}: coefficient of restitution (grey: the grains stick)")
+    ax.figure.colorbar(mesh, ax=ax, label="eps")
+    ax.legend(loc="upper right")
+    return ax
+

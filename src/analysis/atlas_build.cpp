@@ -153,7 +153,7 @@ void AtlasBuild::fix_z_axis(const AtlasAxis& x, const AtlasAxis& y) {
   const double step0 = std::log(request_.velocity_max / request_.velocity_min) /
                        static_cast<double>(request_.velocity_nodes - 1);
   const auto count = static_cast<std::size_t>(std::ceil((hi - lo) / step0 * (1 - 1e-12))) + 1;
-  base_.z = AtlasAxis{lo, step0, std::max<std::size_t>(count, 4)};
+  base_.z = AtlasAxis{lo, step0, std::max<std::size_t>(count, 4), {}};
   z_fixed_ = true;
 }
 

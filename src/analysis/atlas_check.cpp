@@ -14,120 +14,137 @@ namespace bounce::analysis::detail {
 
 namespace {
 
-// Held-out points per round, by kind: on the nodes (z alone), on rows of y nodes (x and z),
-// on columns of x nodes (y and z), anywhere; and sticking velocities (a bisection each).
+// Held-out points per round, by kind: on the nodes (z alone), on rows of y nodes (x and z), on
+// columns of x nodes (y and z), anywhere, and at the middle of every x cell (its sticking
+// velocity and one collision: where a cubic errs most); sticking velocities are bisections.
 constexpr int z_points = 100, x_points = 150, y_points = 150, full_points = 600;
 constexpr int threshold_points = 12;
-constexpr int max_level_x = 5, max_level_y = 4, max_level_z = 4;
-
-struct Probe {
-  std::array<double, 2> radii;
-  double v = 0.0;   ///< 0: a sticking velocity
-  int kind = 0;     ///< 0 z, 1 x, 2 y, 3 full
-};
+constexpr int max_level_y = 4, max_level_z = 4;
+constexpr std::size_t max_x_nodes = 2048;
 
 }  // namespace
 
-void AtlasBuild::check_collision(const Atlas& a, const std::array<double, 2>& radii, double v, double& worst,
-                                 AtlasCheck& c) {
+// |eps_atlas - eps_collide| at one point (0 where both stick); an outcome that differs counts
+// as the relative distance to the interpolated v_s, in `band`.
+double AtlasBuild::check_collision(const Atlas& a, const std::array<double, 2>& radii, double v, double& band,
+                                   AtlasCheck& c) {
   const AtlasCollision direct = collision(radii, v);
   const AtlasValue got = a.at({radii[0], radii[1], v});
   ++c.points;
   if (got.sticks != direct.sticks) {
-    // Only inside the band of the interpolated v_s: counted as its error.
-    const double band = std::isfinite(got.v_stick) ? std::abs(v / got.v_stick - 1.0) : 1.0;
-    c.vs_full = std::max(c.vs_full, band);
-    return;
+    band = std::isfinite(got.v_stick) ? std::abs(v / got.v_stick - 1.0) : 1.0;
+    return 0.0;
   }
-  if (direct.sticks) return;
-  worst = std::max(worst, std::abs(got.cor - direct.cor));
+  if (direct.sticks) return 0.0;
   c.contact_time = std::max(c.contact_time, std::abs(*got.contact_time / direct.contact_time - 1.0));
   c.energy = std::max({c.energy, std::abs(*got.bulk_fraction - direct.bulk_fraction),
                        std::abs(*got.crack_fraction - direct.crack_fraction)});
+  return std::abs(got.cor - direct.cor);
 }
 
-void AtlasBuild::check_threshold(const Atlas& a, const std::array<double, 2>& radii, double& worst) {
+// The relative error of v_s; inside the table's speeds only: above them the atlas need only
+// say that the grains stick at all of them (docs/atlas.md).
+double AtlasBuild::check_threshold(const Atlas& a, const std::array<double, 2>& radii) {
   const AtlasThreshold direct = threshold(radii);
-  // v_s is held to its error inside the table's speeds; above them, the atlas need only say
-  // that the grains stick at all of them (docs/atlas.md).
   const double got = a.v_stick(radii[0], radii[1]);
   const double v_max = request_.velocity_max;
   if (!direct.defined || direct.velocity > v_max) {
-    if (got < v_max) worst = std::max(worst, direct.defined ? std::abs(got / direct.velocity - 1.0) : 1.0);
-    return;
+    return got < v_max ? (direct.defined ? std::abs(got / direct.velocity - 1.0) : 1.0) : 0.0;
   }
-  worst = std::max(worst, std::isinf(got) ? 1.0 : std::abs(got / direct.velocity - 1.0));
+  return std::isinf(got) ? 1.0 : std::abs(got / direct.velocity - 1.0);
 }
 
-AtlasCheck AtlasBuild::check(const Atlas& a, int round) {
+std::vector<Probe> AtlasBuild::probes(const Atlas& a, int round) const {
   std::mt19937_64 rng(0x61746c6173ULL + static_cast<unsigned>(round));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double lx = std::log(request_.radius_min), hx = std::log(request_.radius_max);
   const double lv = std::log(request_.velocity_min), hv = std::log(request_.velocity_max);
-  const auto random_x = [&] { return std::exp(lx + (hx - lx) * unit(rng)); };
-  const auto random_y = [&] { return std::exp(a.y.start + (a.y.end() - a.y.start) * unit(rng)); };
   const auto node_of = [&](const AtlasAxis& axis) {
     std::uniform_int_distribution<std::size_t> pick(0, axis.count - 1);
-    return std::exp(axis.value(pick(rng)));
+    return axis.value(pick(rng));
   };
+  const auto random_x = [&] { return lx + (hx - lx) * unit(rng); };
+  const auto random_y = [&] { return a.y.start + (a.y.end() - a.y.start) * unit(rng); };
   const auto node_x = [&] { return node_of(a.x); };
   const auto node_y = [&] { return node_of(a.y); };
-  const auto random_v = [&] { return std::exp(lv + (hv - lv) * unit(rng)); };
-  std::vector<Probe> probes;
-  const auto add = [&](int kind, int count, auto x, auto y, bool speeds) {
-    for (int i = 0; i < count; ++i) {
-      const double r = x(), rho = y();
-      probes.push_back({radii_for(r, std::clamp(rho, density_[0], density_[1]), m1_.density, m2_.density),
-                        speeds ? random_v() : 0.0, kind});
-    }
+  std::vector<Probe> out;
+  const auto add = [&](Kind kind, double x, double y, bool speed) {
+    const double v = speed ? std::exp(lv + (hv - lv) * unit(rng)) : 0.0;
+    out.push_back({radii_for(std::exp(x), std::clamp(std::exp(y), density_[0], density_[1]), m1_.density, m2_.density),
+                   v, kind, x});
   };
-  add(0, z_points, node_x, node_y, true);
-  add(1, x_points, random_x, node_y, true);
-  add(2, y_points, node_x, random_y, true);
-  add(3, full_points, random_x, random_y, true);
-  if (can_stick_) {
-    add(1, threshold_points, random_x, node_y, false);
-    add(2, threshold_points, node_x, random_y, false);
-    add(3, threshold_points, random_x, random_y, false);
+  for (const bool speed : {true, false}) {
+    if (!speed && !can_stick_) break;
+    const int scale = speed ? 1 : 0;
+    for (int i = 0; i < (speed ? z_points : 0); ++i) add(on_nodes, node_x(), node_y(), true);
+    for (int i = 0; i < scale * x_points + (1 - scale) * threshold_points; ++i) add(x_kind, random_x(), node_y(), speed);
+    for (int i = 0; i < scale * y_points + (1 - scale) * threshold_points; ++i) add(y_kind, node_x(), random_y(), speed);
+    for (int i = 0; i < scale * full_points + (1 - scale) * threshold_points; ++i) add(anywhere, random_x(), random_y(), speed);
+    for (std::size_t i = 0; i + 1 < a.x.count; ++i) {
+      add(x_middle, 0.5 * (a.x.value(i) + a.x.value(i + 1)), a.y.value((i * 7 + static_cast<std::size_t>(round)) % a.y.count), speed);
+    }
   }
-  run_jobs(probes.size(), [&](std::size_t i) {
-    const Probe& p = probes[i];
-    if (p.v > 0.0) collision(p.radii, p.v);
-    else threshold(p.radii);
+  return out;
+}
+
+AtlasCheck AtlasBuild::check(const Atlas& a, int round) {
+  const std::vector<Probe> all = probes(a, round);
+  run_jobs(all.size(), [&](std::size_t i) {
+    if (all[i].v > 0.0) collision(all[i].radii, all[i].v);
+    else threshold(all[i].radii);
   });
   AtlasCheck c;
-  for (const Probe& p : probes) {
+  std::vector<std::pair<double, double>> eps_x, vs_x;  // (ln R, error) of the points x may explain
+  for (const Probe& p : all) {
     if (p.v > 0.0) {
-      double& worst = p.kind == 0 ? c.z : p.kind == 1 ? c.x : p.kind == 2 ? c.y : c.full;
-      check_collision(a, p.radii, p.v, worst, c);
+      double band = 0.0;
+      const double e = check_collision(a, p.radii, p.v, band, c);
+      double& worst = p.kind == on_nodes ? c.z : p.kind == y_kind ? c.y : p.kind == anywhere ? c.full : c.x;
+      worst = std::max(worst, e);
+      c.vs_full = std::max(c.vs_full, band);
+      if (p.kind != on_nodes && p.kind != y_kind) eps_x.emplace_back(p.ln_r, e);
+      if (band > 0.0) vs_x.emplace_back(p.ln_r, band);
     } else {
-      double& worst = p.kind == 1 ? c.vs_x : p.kind == 2 ? c.vs_y : c.vs_full;
-      check_threshold(a, p.radii, worst);
+      const double e = check_threshold(a, p.radii);
       ++c.thresholds;
+      (p.kind == y_kind ? c.vs_y : p.kind == anywhere ? c.vs_full : c.vs_x) = std::max(
+          p.kind == y_kind ? c.vs_y : p.kind == anywhere ? c.vs_full : c.vs_x, e);
+      if (p.kind != y_kind) vs_x.emplace_back(p.ln_r, e);
     }
+  }
+  // x cells to split: where a point fails by more than z's and y's errors explain.
+  const double target = request_.tolerance / 2.0;
+  for (const auto& [ln_r, e] : eps_x) {
+    if (e > target / 2.0 && e > 2.0 * std::max(c.z, c.y)) c.x_failing.push_back(ln_r);
+  }
+  for (const auto& [ln_r, e] : vs_x) {
+    if (e > v_stick_target && e > 2.0 * c.vs_y) c.x_failing.push_back(ln_r);
   }
   return c;
 }
 
-// Which axes to refine (false: done). The eps target is tolerance / 2 (the stated bound is
-// twice the largest error found), v_s's v_stick_target.
+// What to refine (false: done): z and y as a whole, x where its points fail. The eps target is
+// tolerance / 2 (the stated bound is twice the largest error found), v_s's v_stick_target.
 bool AtlasBuild::refine(AtlasLevels& levels, const AtlasCheck& c) const {
   const double target = request_.tolerance / 2.0;
-  bool rz = c.z > target / 2.0;
-  bool rx = (c.x > target / 2.0 && c.x > 2.0 * c.z) || c.vs_x > v_stick_target;
-  bool ry = (c.y > target / 2.0 && c.y > 2.0 * c.z) || c.vs_y > v_stick_target;
+  const bool rz = c.z > target / 2.0;
+  const bool ry = (c.y > target / 2.0 && c.y > 2.0 * c.z) || c.vs_y > v_stick_target;
   const bool failing = c.cor() > target || c.v_stick() > v_stick_target;
-  if (!failing && !rz && !rx && !ry) return false;
-  if (!rz && !rx && !ry) {  // only the points anywhere fail: the axis with the larger error
-    (std::max(c.x, c.vs_x / v_stick_target * target) >= std::max(c.y, c.vs_y / v_stick_target * target) ? rx : ry) = true;
+  if (!failing && !rz && !ry && c.x_failing.empty()) return false;
+  std::vector<std::size_t> cells;
+  const AtlasAxis x = base_.x_at(levels);
+  for (double ln_r : c.x_failing) {
+    const auto above = std::upper_bound(x.nodes.begin(), x.nodes.end(), ln_r);
+    cells.push_back(static_cast<std::size_t>(std::clamp<long>(above - x.nodes.begin() - 1, 0, static_cast<long>(x.count) - 2)));
   }
-  const auto beyond = [&](bool want, int& level, int max) {
-    if (!want) return false;
-    if (level >= max) return true;
-    ++level;
-    return false;
-  };
-  if (beyond(rx, levels.x, max_level_x) | beyond(ry, levels.y, max_level_y) | beyond(rz, levels.z, max_level_z)) {
+  bool stuck = false;
+  if (!cells.empty() && (!split_x_cells(levels.x, cells) || levels.x.size() > max_x_nodes)) stuck = true;
+  if (rz) stuck |= ++levels.z > max_level_z;
+  if (ry) stuck |= ++levels.y > max_level_y;
+  if (!rz && !ry && cells.empty()) {  // only the points anywhere fail, and none explains it alone: y
+    stuck |= ++levels.y > max_level_y;
+  }
+  if (stuck) {
     throw InvalidArgument("tol", fmt::format("{}", request_.tolerance),
                           fmt::format("a tolerance the atlas reaches within its finest grid: there its largest eps "
                                       "error is {:.3g} and v_s's {:.3g} (a larger --tol, or a smaller range)",
@@ -139,6 +156,7 @@ bool AtlasBuild::refine(AtlasLevels& levels, const AtlasCheck& c) const {
 Atlas AtlasBuild::run() {
   initial_grid();
   AtlasLevels levels;
+  levels.x = base_.first_x_keys();
   for (int round = 0;; ++round) {
     compute_nodes(levels);
     Atlas a = assemble(levels);

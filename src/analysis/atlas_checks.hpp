@@ -25,12 +25,22 @@ inline constexpr double column_cap = 4.0;
 /// The relative error of v_s the checks must reach (the stated bound is twice what they find).
 inline constexpr double v_stick_target = 5e-7;
 
+/// A held-out point of a round's checks (docs/atlas.md, "Error control").
+enum Kind { on_nodes, x_kind, y_kind, anywhere, x_middle };
+struct Probe {
+  std::array<double, 2> radii;
+  double v = 0.0;  ///< 0: a sticking velocity
+  Kind kind = on_nodes;
+  double ln_r = 0.0;
+};
+
 /// What one round of held-out checks measured.
 struct AtlasCheck {
   double z = 0.0, x = 0.0, y = 0.0, full = 0.0;     ///< largest |eps error| by kind of point
   double vs_x = 0.0, vs_y = 0.0, vs_full = 0.0;     ///< largest relative v_s error
   double contact_time = 0.0, energy = 0.0;
   long points = 0, thresholds = 0;
+  std::vector<double> x_failing;  ///< ln R_eff of the points whose error the x cells explain
   double cor() const { return std::max({z, x, y, full}); }
   double v_stick() const { return std::max({vs_x, vs_y, vs_full}); }
 };
@@ -57,8 +67,9 @@ class AtlasBuild {
   void fill_column(Atlas& a, std::size_t ix, std::size_t iy);
   void fill_undefined(Atlas& a) const;
   AtlasCheck check(const Atlas& a, int round);
-  void check_collision(const Atlas& a, const std::array<double, 2>& radii, double v, double& worst, AtlasCheck& c);
-  void check_threshold(const Atlas& a, const std::array<double, 2>& radii, double& worst);
+  std::vector<Probe> probes(const Atlas& a, int round) const;
+  double check_collision(const Atlas& a, const std::array<double, 2>& radii, double v, double& band, AtlasCheck& c);
+  double check_threshold(const Atlas& a, const std::array<double, 2>& radii);
   bool refine(AtlasLevels& levels, const AtlasCheck& c) const;
 
   const AtlasRequest& request_;

@@ -86,9 +86,49 @@ Pair atlas_pair(const Material& m1, const Material& m2, const std::array<double,
   return Pair(sphere(m1, radii[0]), sphere(m2, radii[1]));
 }
 
+AtlasAxis AtlasGridBase::x_at(const AtlasLevels& l) const {
+  AtlasAxis a;
+  const double unit = std::ldexp(x.step, -x_key_depth);  // exact: a key's coordinate never changes
+  for (long k : l.x) a.nodes.push_back(x.start + static_cast<double>(k) * unit);
+  a.count = a.nodes.size();
+  a.start = a.nodes.front();
+  a.step = unit;
+  return a;
+}
+
+std::vector<long> AtlasGridBase::first_x_keys() const {
+  std::vector<long> keys;
+  for (std::size_t i = 0; i < x.count; ++i) keys.push_back(static_cast<long>(i) << x_key_depth);
+  return keys;
+}
+
+bool split_x_cells(std::vector<long>& keys, const std::vector<std::size_t>& cells) {
+  std::vector<long> added;
+  for (std::size_t c : cells) {
+    if (c + 1 < keys.size() && keys[c + 1] - keys[c] >= 2) added.push_back((keys[c] + keys[c + 1]) / 2);
+  }
+  if (added.empty()) return false;
+  keys.insert(keys.end(), added.begin(), added.end());
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  for (bool graded = false; !graded;) {  // 2:1 balance between neighbouring cells
+    graded = true;
+    for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+      const long w = keys[i + 1] - keys[i];
+      const long left = i > 0 ? keys[i] - keys[i - 1] : w, right = i + 2 < keys.size() ? keys[i + 2] - keys[i + 1] : w;
+      if (w > 2 * std::min(left, right) && w >= 2) {
+        keys.insert(keys.begin() + static_cast<long>(i) + 1, (keys[i] + keys[i + 1]) / 2);
+        graded = false;
+        break;
+      }
+    }
+  }
+  return true;
+}
+
 AtlasAxis AtlasGridBase::at(const AtlasAxis& base, int level) const {
   const double scale = std::ldexp(1.0, -level);  // exact: coarse nodes keep their coordinates
-  return AtlasAxis{base.start, base.step * scale, ((base.count - 1) << level) + 1};
+  return AtlasAxis{base.start, base.step * scale, ((base.count - 1) << level) + 1, {}};
 }
 
 }  // namespace bounce::analysis::detail

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <vector>
 
 #include "bounce/analysis/atlas.hpp"
 #include "bounce/pair/pair.hpp"
@@ -20,18 +21,30 @@ std::array<double, 2> radii_for(double r, double rho, double density1, double de
 /// The pair of the atlas's materials with these radii.
 Pair atlas_pair(const Material& m1, const Material& m2, const std::array<double, 2>& radii);
 
-/// A grid level: the first grid's steps halved `level` times on each axis (nodes of a coarser
-/// level are nodes of every finer one, at exactly the same coordinates).
+/// x nodes lie on a fine lattice: key k is x = start + k (step / 2^x_key_depth) of the first grid.
+inline constexpr int x_key_depth = 10;
+
+/// A grid: the x nodes by their keys (cells split where the checks fail: docs/atlas.md), and the
+/// first grid's steps of y and z halved `y` and `z` times. Nodes of a coarser grid are nodes of
+/// every finer one, at exactly the same coordinates.
 struct AtlasLevels {
-  int x = 0, y = 0, z = 0;
+  std::vector<long> x;  ///< ascending keys
+  int y = 0, z = 0;
 };
 
 struct AtlasGridBase {
-  AtlasAxis x, y, z;  ///< level 0
+  AtlasAxis x, y, z;  ///< the first grid
   AtlasAxis at(const AtlasAxis& base, int level) const;
-  AtlasAxis x_at(const AtlasLevels& l) const { return at(x, l.x); }
+  AtlasAxis x_at(const AtlasLevels& l) const;
   AtlasAxis y_at(const AtlasLevels& l) const { return at(y, l.y); }
   AtlasAxis z_at(const AtlasLevels& l) const { return at(z, l.z); }
+  /// The first grid's keys.
+  std::vector<long> first_x_keys() const;
 };
+
+/// Splits the cells whose index is in `cells` (their midpoint becomes a node, where the lattice
+/// allows), then any cell more than twice as wide as a neighbour, so that stencils stay graded.
+/// Returns false when no cell could be split.
+bool split_x_cells(std::vector<long>& keys, const std::vector<std::size_t>& cells);
 
 }  // namespace bounce::analysis::detail

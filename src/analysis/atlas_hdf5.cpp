@@ -55,6 +55,7 @@ std::uint32_t digest(const Atlas& a) {
   for (const auto& w : a.warnings) text += w + "|";
   boost::crc_32_type crc;
   crc.process_bytes(text.data(), text.size());
+  crc.process_bytes(a.x.nodes.data(), a.x.nodes.size() * sizeof(double));
   crc.process_bytes(&a.ln_v_reference, sizeof(double));
   crc.process_bytes(a.stick_ratio.data(), a.stick_ratio.size() * sizeof(double));
   crc.process_bytes(a.defined.data(), a.defined.size());
@@ -152,7 +153,7 @@ void write_contents(hid_t file, const Atlas& a, const std::string& path) {
   }
   {
     Handle g(group(file, "grid", path), H5Gclose);
-    write_axis(g.get(), "x_ln_reduced_radius", a.x, "ln(m)", path);
+    write_axis(g.get(), "x_ln_reduced_radius", a.x, "ln(m) (non-uniform: refined where needed; step: the narrowest cell)", path);
     write_axis(g.get(), "y_ln_effective_density", a.y, "ln(kg/m^3)", path);
     write_axis(g.get(), "z_ln_velocity_above_v_stick", a.z, "ln(m/s)", path);
     array(g.get(), "stick_ratio", a.stick_ratio.data(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {a.x.count, a.y.count},

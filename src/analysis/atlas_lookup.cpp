@@ -59,6 +59,8 @@ void Atlas::prepare(const std::string& source) {
   for (const AtlasAxis* a : {&x, &y, &z}) {
     if (!std::isfinite(a->start) || !(a->step > 0.0) || !std::isfinite(a->end())) bad("finite axes with steps > 0");
   }
+  if (!y.nodes.empty() || !z.nodes.empty()) bad("uniform y and z axes");
+  prepare_x(bad);
   const std::size_t nxy = x.count * y.count;
   if (stick_ratio.size() != nxy || defined.size() != nxy) bad("one sticking velocity per (R_eff, rho_eff) node");
   if (!std::isfinite(ln_v_reference)) bad("a finite reference velocity");
@@ -84,13 +86,55 @@ void Atlas::prepare(const std::string& source) {
   }
 }
 
+// The x axis's lookup tables: for bins of the narrowest cell's width the cell at each bin's
+// start (a point then lies in that cell or one of the next two), and per stencil its Lagrange
+// denominators.
+void Atlas::prepare_x(const std::function<void(const std::string&)>& bad) {
+  if (x.nodes.empty()) {  // a uniform axis: its nodes
+    for (std::size_t i = 0; i < x.count; ++i) x.nodes.push_back(x.start + static_cast<double>(i) * x.step);
+  }
+  if (x.nodes.size() != x.count || x.nodes.front() != x.start) bad("x nodes that match the axis");
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < x.count; ++i) {
+    if (!(x.nodes[i + 1] > x.nodes[i])) bad("ascending x nodes");
+    narrowest = std::min(narrowest, x.nodes[i + 1] - x.nodes[i]);
+  }
+  if (!(narrowest >= 1e-6 * (x.end() - x.start))) bad("x cells at least 1e-6 of the axis wide");
+  x.step = narrowest;
+  inverse_step_[0] = 1.0 / narrowest;
+  const auto bins = static_cast<std::size_t>((x.end() - x.start) * inverse_step_[0]) + 2;
+  x_cell_.assign(bins, 0);
+  std::size_t i = 0;
+  for (std::size_t b = 0; b < bins; ++b) {
+    const double at = x.start + static_cast<double>(b) * narrowest;
+    while (i + 2 < x.count && x.nodes[i + 1] <= at) ++i;
+    x_cell_[b] = static_cast<std::uint32_t>(i);
+  }
+  x_weight_scale_.assign(4 * (x.count - 3), 0.0);
+  for (std::size_t b = 0; b + 3 < x.count; ++b) {
+    for (std::size_t a = 0; a < 4; ++a) {
+      double d = 1.0;
+      for (std::size_t c = 0; c < 4; ++c) d *= c == a ? 1.0 : x.nodes[b + a] - x.nodes[b + c];
+      x_weight_scale_[4 * b + a] = 1.0 / d;
+    }
+  }
+}
+
 // The centred 4x4 stencil of the cell that holds (ln R_eff, ln rho_eff) (one-sided at the edges).
 void Atlas::locate(double ln_r, double ln_rho, Stencil& s) const noexcept {
   const double ux = (ln_r - x.start) * inverse_step_[0], uy = (ln_rho - y.start) * inverse_step_[1];
-  const std::size_t i = cell_of(ux, x.count), j = cell_of(uy, y.count);
+  std::size_t i = x_cell_[std::min(static_cast<std::size_t>(std::max(ux, 0.0)), x_cell_.size() - 1)];
+  while (i + 2 < x.count && ln_r >= x.nodes[i + 1]) ++i;
+  const std::size_t j = cell_of(uy, y.count);
   s.bx = std::min(i > 0 ? i - 1 : 0, x.count - 4);
   s.by = std::min(j > 0 ? j - 1 : 0, y.count - 4);
-  lagrange4(ux - static_cast<double>(s.bx), s.wx);
+  const double* n = &x.nodes[s.bx];
+  const double t0 = ln_r - n[0], t1 = ln_r - n[1], t2 = ln_r - n[2], t3 = ln_r - n[3];
+  const double* scale = &x_weight_scale_[4 * s.bx];
+  s.wx[0] = t1 * t2 * t3 * scale[0];
+  s.wx[1] = t0 * t2 * t3 * scale[1];
+  s.wx[2] = t0 * t1 * t3 * scale[2];
+  s.wx[3] = t0 * t1 * t2 * scale[3];
   lagrange4(uy - static_cast<double>(s.by), s.wy);
 }
 

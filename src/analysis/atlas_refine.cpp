@@ -27,10 +27,10 @@ std::vector<AtlasParameter> model_parameters(const AtlasRequest& request) {
 
 void AtlasBuild::initial_grid() {
   const double lx = std::log(request_.radius_min), hx = std::log(request_.radius_max);
-  base_.x = AtlasAxis{lx, (hx - lx) / static_cast<double>(request_.radius_nodes - 1), request_.radius_nodes};
+  base_.x = AtlasAxis{lx, (hx - lx) / static_cast<double>(request_.radius_nodes - 1), request_.radius_nodes, {}};
   const double ly = std::log(density_[0]), hy = std::log(density_[1]);
   // rho_eff spans a factor of at most 4 for like materials: 4 nodes to start (one cubic).
-  base_.y = AtlasAxis{ly, std::max(hy - ly, 1e-6) / 3.0, 4};
+  base_.y = AtlasAxis{ly, std::max(hy - ly, 1e-6) / 3.0, 4, {}};
 }
 
 void AtlasBuild::fill_column(Atlas& a, std::size_t ix, std::size_t iy) {
@@ -102,18 +102,17 @@ Atlas AtlasBuild::assemble(const AtlasLevels& levels) {
 
 namespace {
 
-// Linear continuation along a row of nodes from its two nearest `known` ones (on the side of
-// larger x where there are two there, else the other): value(ix) for an unknown ix.
+// Linear continuation in x along a row of nodes from its two nearest `known` ones (on the side
+// of larger x where there are two there, else the other): value(ix) for an unknown ix.
 template <class Value>
-double continued(const std::vector<std::size_t>& known, std::size_t ix, Value value) {
+double continued(const AtlasAxis& x, const std::vector<std::size_t>& known, std::size_t ix, Value value) {
   if (known.empty()) return NAN;
   if (known.size() == 1) return value(known.front());
   const auto above = std::upper_bound(known.begin(), known.end(), ix);
   const bool right = above != known.end() && above + 1 != known.end();
   const std::size_t d1 = right ? *above : known[known.size() - 2], d2 = right ? *(above + 1) : known.back();
   const double f1 = value(d1), f2 = value(d2);
-  return f1 + (f2 - f1) * (static_cast<double>(ix) - static_cast<double>(d1)) /
-                  (static_cast<double>(d2) - static_cast<double>(d1));
+  return f1 + (f2 - f1) * (x.value(ix) - x.value(d1)) / (x.value(d2) - x.value(d1));
 }
 
 }  // namespace
@@ -133,14 +132,14 @@ void AtlasBuild::fill_undefined(Atlas& a) const {
     for (std::size_t ix = 0; ix < nx; ++ix) {
       if (!known_ratio_[ix * ny + iy]) {
         const double cap = 0.5 * a.reference_velocity(a.x.value(ix), a.y.value(iy)) / c_t_;
-        const double w = continued(with_ratio, ix, [&](std::size_t k) { return a.stick_ratio[k * ny + iy]; });
+        const double w = continued(a.x, with_ratio, ix, [&](std::size_t k) { return a.stick_ratio[k * ny + iy]; });
         a.stick_ratio[ix * ny + iy] = std::isnan(w) ? cap : std::min(cap, w);
       }
       if (a.defined[ix * ny + iy] != 0) continue;
       for (std::size_t f = 0; f < atlas_field_count; ++f) {
         for (std::size_t iz = 0; iz < nz; ++iz) {
           const auto at = [&](std::size_t k) { return a.values[((f * nx + k) * ny + iy) * nz + iz]; };
-          const double v = continued(with_column, ix, at);
+          const double v = continued(a.x, with_column, ix, at);
           a.values[((f * nx + ix) * ny + iy) * nz + iz] = std::isnan(v) ? (f == 0 ? 1.0 : 0.0) : v;
         }
       }

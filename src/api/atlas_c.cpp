@@ -75,7 +75,7 @@ void bounce_atlas_get_ranges(const bounce_atlas* atlas, bounce_atlas_ranges* out
 
 void bounce_atlas_get_grid(const bounce_atlas* atlas, bounce_atlas_grid* out) {
   const auto& a = atlas->atlas;
-  *out = {a.x.count, a.y.count, a.z.count, a.x.start, a.x.step, a.y.start, a.y.step, a.z.start, a.z.step,
+  *out = {a.x.count, a.y.count, a.z.count, a.x.nodes.data(), a.y.start, a.y.step, a.z.start, a.z.step,
           a.ln_v_reference, a.can_stick ? 1 : 0, a.stick_ratio.data(), a.values.data()};
 }
 

@@ -95,6 +95,7 @@ def test_the_file_describes_itself_to_h5py(path, atlas):
     (lambda a: a.v_stick(-1.0, 2e-6), "radius1"),
     (lambda a: a.p_stick(3e-6, 4e-6, 0.0), "sigma_v"),
     (lambda a: a.p_stick(3e-6, 4e-6, 30.0), "sigma_v"),   # much of it above 20 m/s
+    (lambda a: a.p_stick(np.full((2, 3), 3e-6), np.full((2, 3), 4e-6), np.full((2, 3), 30.0)), "sigma_v"),
     (lambda a: a.p_stick(3e-6, 4e-6, 5.0, distribution="gauss"), "distribution"),
 ])
 def test_bad_queries_name_the_value_and_the_range(atlas, call, name):

@@ -9,7 +9,8 @@
 // times the m_eff of a sphere of radius R_eff on a wall). With rho_eff = m_eff / (4 pi R_eff^3 / 3)
 // the third axis is bounded: for like materials rho <= rho_eff <= 4 rho.
 //
-// The grid: x = ln R_eff, y = ln rho_eff, z = ln(v - v_s(x, y)), uniform in each, with
+// The grid: x = ln R_eff (nodes refined where they are needed), y = ln rho_eff and
+// z = ln(v - v_s(x, y)) (uniform), with
 // v_s the sticking velocity (0 for models that cannot stick). In z the tabulated factor
 // c = eps sqrt(v / (v - v_s)) is smooth down to the threshold (eps ~ sqrt(v - v_s) there),
 // so a tensor cubic interpolation holds the error the build measured. v_s itself is held as
@@ -32,12 +33,14 @@
 
 namespace bounce::analysis {
 
-/// A uniform axis: value(i) = start + i * step, i = 0 .. count - 1.
+/// An axis: uniform, value(i) = start + i * step, i = 0 .. count - 1, or given by its nodes
+/// (ascending; then start is the first and step the narrowest cell).
 struct AtlasAxis {
   double start = 0.0;
   double step = 0.0;
   std::size_t count = 0;
-  double value(std::size_t i) const { return start + static_cast<double>(i) * step; }
+  std::vector<double> nodes;  ///< a non-uniform axis's nodes; empty: uniform
+  double value(std::size_t i) const { return nodes.empty() ? start + static_cast<double>(i) * step : nodes[i]; }
   double end() const { return value(count - 1); }
 };
 
@@ -98,7 +101,7 @@ class Atlas {
   std::vector<std::string> warnings;        ///< validity warnings of its collisions, one per kind
 
   // --- the grid ------------------------------------------------------------------------
-  AtlasAxis x, y, z;             ///< ln R_eff, ln rho_eff, ln(v - v_s)
+  AtlasAxis x, y, z;             ///< ln R_eff (non-uniform), ln rho_eff, ln(v - v_s) (uniform)
   double ln_v_reference = 0.0;          ///< a of v_ref = exp(a - 5/6 x - y/2) [ln(m/s)]
   std::vector<double> stick_ratio;      ///< (x, y): w = v_ref / v_s; continued linearly in x where
                                         ///< the grains stick up to the sound speed (w <= 0: v_s = inf)
@@ -136,7 +139,10 @@ class Atlas {
  private:
   struct Stencil;
   double lo_x_ = 0.0, hi_x_ = 0.0;
-  std::array<double, 3> inverse_step_{};  ///< 1 / step of x, y, z (a lookup multiplies)
+  std::array<double, 3> inverse_step_{};  ///< 1 / step of x (its index bins), y, z (a lookup multiplies)
+  std::vector<std::uint32_t> x_cell_;      ///< per bin of width x.step: the cell at the bin's start
+  std::vector<double> x_weight_scale_;     ///< per stencil start: 1 / prod_{b != a} (x_a - x_b), a = 0..3
+  void prepare_x(const std::function<void(const std::string&)>& bad);
   void locate(double ln_r, double ln_rho, Stencil& s) const noexcept;
   double v_stick_at(const Stencil& s, double ln_r, double ln_rho) const noexcept;
   double field_at(const Stencil& s, AtlasField f, double zq) const noexcept;
