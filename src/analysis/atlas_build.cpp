@@ -80,7 +80,7 @@ AtlasThreshold AtlasBuild::threshold(const std::array<double, 2>& radii) {
   const Pair pair = atlas_pair(m1_, m2_, radii);
   const models::Model model = models::make_model(pair, request_.model, request_.model_parameters);
   // 1e-10: far below the 1e-6 the interpolated v_s is held to, and the first z point
-  // (threshold_margin above v_s) bounces for sure.
+  // (threshold_margin >= 1e-9 above v_s) bounces for sure.
   const StickingVelocity s = sticking_velocity(pair, model, request_.options, 1e-10);
   AtlasThreshold t{!s.sticks_up_to_sound_speed, s.sticks_up_to_sound_speed ? 0.0 : s.velocity};
   if (t.defined && t.velocity + request_.velocity_min > c_t_) t.defined = false;  // no bounce to tabulate
@@ -109,14 +109,14 @@ std::array<double, 2> AtlasBuild::node_radii(const AtlasAxis& x, const AtlasAxis
   return radii_for(std::exp(x.value(ix)), std::exp(y.value(iy)), m1_.density, m2_.density);
 }
 
-// The z points of a node: from threshold_margin v_s above its sticking velocity (the sqrt law
-// holds below) to v_max, never above the sound speed.
+// The z points of a node: from threshold_margin v_s above its sticking velocity to v_max, never
+// above the sound speed.
 std::vector<double> AtlasBuild::column_speeds(const AtlasThreshold& t, const AtlasAxis& z) const {
   std::vector<double> speeds;
   if (!t.defined || t.velocity > column_cap * request_.velocity_max) return speeds;
   for (std::size_t k = 0; k < z.count; ++k) {
     const double gap = std::exp(z.value(k));
-    if (can_stick_ && gap < threshold_margin * t.velocity) continue;
+    if (can_stick_ && gap < threshold_margin(request_.tolerance) * t.velocity) continue;
     const double v = t.velocity + gap;
     if (v > c_t_) break;
     speeds.push_back(v);
@@ -136,7 +136,7 @@ void AtlasBuild::compute_nodes(const AtlasLevels& levels) {
   });
 }
 
-// The z axis's start: threshold_margin times the smallest v_s of the first grid, over 4 (finer
+// The z axis's start: threshold_margin(tol) times the smallest v_s of the first grid, over 4 (finer
 // grids meet smaller ones between its nodes); ln v_min for models that cannot stick.
 void AtlasBuild::fix_z_axis(const AtlasAxis& x, const AtlasAxis& y) {
   double smallest = std::numeric_limits<double>::infinity();
@@ -147,7 +147,7 @@ void AtlasBuild::fix_z_axis(const AtlasAxis& x, const AtlasAxis& y) {
     }
   }
   const double lo = can_stick_ && std::isfinite(smallest)
-                        ? std::min(std::log(threshold_margin * smallest / 4.0), std::log(request_.velocity_min))
+                        ? std::min(std::log(threshold_margin(request_.tolerance) * smallest / 4.0), std::log(request_.velocity_min))
                         : std::log(request_.velocity_min);
   const double hi = std::log(request_.velocity_max);
   const double step0 = std::log(request_.velocity_max / request_.velocity_min) /

@@ -2,6 +2,7 @@
 // Private: the atlas build (atlas_build.cpp: nodes; atlas_refine.cpp: assembly, held-out
 // checks and refinement).
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -15,10 +16,12 @@
 
 namespace bounce::analysis::detail {
 
-/// The first z point of a sticking node lies this fraction of v_s above v_s. Closer, the
-/// lookup holds c = eps sqrt(v / (v - v_s)) at its value there: c moves by O(gap / v_s), so
-/// eps errs by ~c (gap / v_s)^{3/2} <= 1e-6 c.
-inline constexpr double threshold_margin = 1e-4;
+/// The first z point of a sticking node lies threshold_margin(tol) v_s above v_s. Closer, the
+/// lookup holds c = eps sqrt(v / (v - v_s)) at its value there, so eps is at most the first
+/// point's: eps rises like (v - v_s)^p from the threshold, p = 1 under krijt (eps ~ 2.5 (v -
+/// v_s) / v_s for 1 um ice), 1/2 under JKR's equilibrium; at v - v_s = tol/100 v_s that is
+/// well below tol either way (docs/atlas.md).
+inline double threshold_margin(double tolerance) { return std::min(1e-4, tolerance / 100.0); }
 /// Nodes with v_s above this many times v_max have no collisions of their own: a lookup that
 /// bounces meets them only at the edge of its stencil, and their fields are continued along x.
 inline constexpr double column_cap = 4.0;

@@ -45,7 +45,7 @@ void AtlasBuild::fill_column(Atlas& a, std::size_t ix, std::size_t iy) {
   std::vector<std::optional<std::array<double, atlas_field_count>>> column(nz);
   for (std::size_t k = 0; k < nz; ++k) {
     const double gap = std::exp(a.z.value(k));
-    if (can_stick_ && gap < threshold_margin * t.velocity) continue;
+    if (can_stick_ && gap < threshold_margin(request_.tolerance) * t.velocity) continue;
     const double v = t.velocity + gap;
     if (v > c_t_) break;
     const AtlasCollision c = collision(radii, v);
@@ -64,7 +64,7 @@ void AtlasBuild::fill_column(Atlas& a, std::size_t ix, std::size_t iy) {
   bool before = true;
   for (std::size_t k = 0; k < nz; ++k) {
     if (column[k]) before = false;
-    const auto& v = column[k] ? *column[k] : (before ? *first : *last);  // the sqrt law below, the top above
+    const auto& v = column[k] ? *column[k] : (before ? *first : *last);  // c held below, the top above
     for (std::size_t f = 0; f < atlas_field_count; ++f) a.values[((f * a.x.count + ix) * a.y.count + iy) * nz + k] = v[f];
   }
 }

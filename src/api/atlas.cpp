@@ -24,7 +24,7 @@ CommandSpec build_command() {
                  range("velocity", "impact speed [m/s] MIN:MAX:N (N sets the first grid's step in speed, >= 4)"),
                  text_parameter("materials", "body 1's and body 2's materials A[,B] (as --material, --material2)",
                                 "A[,B]"),
-                 with_default(real_parameter("tol", "tolerance", "", open_interval(1e-8, 0.1),
+                 with_default(real_parameter("tol", "tolerance", "", open_interval(1e-7, 0.1),
                                              "largest |eps_atlas - eps_collide| to reach at held-out points (default 1e-4)"),
                               1e-4),
                  with_default(real_parameter("threads", "threads", "", Range{0.0, 1024.0, true, true, false, true},

@@ -132,6 +132,25 @@ TEST(Atlas, KrijtAgreesWithCollideAndItsStickingVelocityWithBisections) {
   }
 }
 
+// Just above v_s, where random points rarely fall: under krijt eps rises linearly from the
+// threshold (eps^2 ~ (v - v_s)^2), which the atlas must follow below its first z point too.
+TEST(Atlas, KrijtJustAboveTheStickingVelocityWithinTheStatedError) {
+  const Atlas& a = krijt_atlas();
+  const AtlasRequest request = krijt_request();
+  for (const auto& [r1, r2] : std::vector<std::array<double, 2>>{{2e-6, 2e-6}, {3e-6, inf}, {4e-6, 1.5e-5}}) {
+    const Pair pair = pair_of(a, r1, r2);
+    const auto model = models::make_model(pair, "krijt", request.model_parameters);
+    const auto s = sticking_velocity(pair, model, request.options, 1e-10);
+    for (double above : {3e-6, 1e-5, 1e-4, 1e-3, 1e-2}) {
+      const double v = s.upper * (1.0 + above);
+      const auto direct = collide(pair, model, v, request.options);
+      ASSERT_EQ(direct.outcome, dynamics::Outcome::bounce);
+      ASSERT_FALSE(a.sticks(r1, r2, v)) << "v = v_s (1 + " << above << ")";
+      EXPECT_LE(std::abs(a.cor(r1, r2, v) - direct.cor), a.errors.cor) << "R1 = " << r1 << ", v = v_s (1 + " << above << ")";
+    }
+  }
+}
+
 TEST(Atlas, FileRoundTripGivesTheSameLookupsBitForBit) {
   const Atlas& a = krijt_atlas();
   const std::string path = temp_path("round.h5");
