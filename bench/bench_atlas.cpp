@@ -63,6 +63,24 @@ void atlas_checked_lookup(benchmark::State& state) {
 }
 BENCHMARK(atlas_checked_lookup);
 
+// The same points in one call (the C API's bounce_atlas_cor_n, Python's vectorised cor).
+void atlas_many(benchmark::State& state) {
+  std::vector<double> r1, r2, v, out(queries().size());
+  for (const Query& q : queries()) {
+    r1.push_back(q.r1);
+    r2.push_back(q.r2);
+    v.push_back(q.v);
+  }
+  for (auto _ : state) {
+    atlas().cor_many(r1.size(), r1.data(), r2.data(), v.data(), out.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * r1.size()));
+  state.counters["ns_per_lookup"] = benchmark::Counter(static_cast<double>(state.iterations() * r1.size()),
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(atlas_many);
+
 void atlas_v_stick(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {

@@ -24,6 +24,10 @@ void bounce_atlas_close(bounce_atlas *atlas);
 
 /* eps in [0, 1] (0 where the grains stick); NaN outside the atlas. */
 double bounce_atlas_cor(const bounce_atlas *atlas, double r1, double r2, double v);
+/* eps at n points at once (out[i] as bounce_atlas_cor(r1[i], r2[i], v[i])): faster per point,
+ * the points' independent work overlapping. */
+void bounce_atlas_cor_n(const bounce_atlas *atlas, size_t n, const double *r1, const double *r2, const double *v,
+                        double *out);
 /* 1 stick, 0 bounce, -1 outside the atlas. */
 int bounce_atlas_sticks(const bounce_atlas *atlas, double r1, double r2, double v);
 /* The sticking velocity; INFINITY where the grains stick at every speed (up to the sound

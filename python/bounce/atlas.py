@@ -72,7 +72,15 @@ class Atlas:
 
     def cor(self, radius1, radius2, velocity):
         """eps (0 where the grains stick), broadcasting like a ufunc."""
-        return self._core.cor(radius1, radius2, velocity)
+        r1, r2, v = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (radius1, radius2, velocity)))
+        if r1.ndim == 0:
+            return self._core.cor(float(r1), float(r2), float(v))
+        out = self._core._cor_many(np.ascontiguousarray(r1).ravel(), np.ascontiguousarray(r2).ravel(),
+                                   np.ascontiguousarray(v).ravel())
+        if np.isnan(out).any():  # outside the atlas: the checked lookup names the value and the range
+            i = int(np.argmax(np.isnan(out)))
+            self._core.cor(float(r1.flat[i]), float(r2.flat[i]), float(v.flat[i]))
+        return out.reshape(r1.shape)
 
     def sticks(self, radius1, radius2, velocity):
         return self._core.sticks(radius1, radius2, velocity)

@@ -26,6 +26,22 @@ void bind_atlas(py::module_& m) {
   py::class_<Atlas>(m, "Atlas", "A collision atlas read from a file of `bounce atlas build` (docs/atlas.md).")
       .def("cor", py::vectorize([](const Atlas* a, double r1, double r2, double v) { return a->cor(r1, r2, v); }),
            py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
+      .def(
+          "_cor_many",
+          [](const Atlas& a, const py::array_t<double, py::array::c_style>& r1, const py::array_t<double, py::array::c_style>& r2,
+             const py::array_t<double, py::array::c_style>& v) {
+            const auto n = static_cast<std::size_t>(v.size());
+            if (static_cast<std::size_t>(r1.size()) != n || static_cast<std::size_t>(r2.size()) != n) {
+              throw std::invalid_argument("_cor_many: arrays of one size");  // bounce.atlas broadcasts first
+            }
+            py::array_t<double> out(static_cast<py::ssize_t>(n));
+            {
+              py::gil_scoped_release release;
+              a.cor_many(n, r1.data(), r2.data(), v.data(), out.mutable_data());
+            }
+            return out;
+          },
+          "eps at flat arrays of equal size (NaN outside the atlas): bounce.atlas.Atlas.cor's loop")
       .def("sticks", py::vectorize([](const Atlas* a, double r1, double r2, double v) { return a->sticks(r1, r2, v); }),
            py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
       .def("v_stick", py::vectorize([](const Atlas* a, double r1, double r2) { return a->v_stick(r1, r2); }),

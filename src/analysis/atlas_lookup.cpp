@@ -121,7 +121,7 @@ void Atlas::prepare_x(const std::function<void(const std::string&)>& bad) {
 }
 
 // The centred 4x4 stencil of the cell that holds (ln R_eff, ln rho_eff) (one-sided at the edges).
-void Atlas::locate(double ln_r, double ln_rho, Stencil& s) const noexcept {
+[[gnu::always_inline]] inline void Atlas::locate(double ln_r, double ln_rho, Stencil& s) const noexcept {
   const double ux = (ln_r - x.start) * inverse_step_[0], uy = (ln_rho - y.start) * inverse_step_[1];
   std::size_t i = x_cell_[std::min(static_cast<std::size_t>(std::max(ux, 0.0)), x_cell_.size() - 1)];
   while (i + 2 < x.count && ln_r >= x.nodes[i + 1]) ++i;
@@ -139,7 +139,7 @@ void Atlas::locate(double ln_r, double ln_rho, Stencil& s) const noexcept {
 }
 
 // v_s = v_ref / w, w by the centred bicubic; +inf where w <= 0 (beyond the radius where v_s diverges).
-double Atlas::v_stick_at(const Stencil& s, double ln_r, double ln_rho) const noexcept {
+[[gnu::always_inline]] inline double Atlas::v_stick_at(const Stencil& s, double ln_r, double ln_rho) const noexcept {
   if (!can_stick) return 0.0;
   double w = 0.0;
   for (std::size_t a = 0; a < 4; ++a) {
@@ -149,7 +149,7 @@ double Atlas::v_stick_at(const Stencil& s, double ln_r, double ln_rho) const noe
   return w > 0.0 ? reference_velocity(ln_r, ln_rho) / w : std::numeric_limits<double>::infinity();
 }
 
-double Atlas::field_at(const Stencil& s, AtlasField f, double zq) const noexcept {
+[[gnu::always_inline]] inline double Atlas::field_at(const Stencil& s, AtlasField f, double zq) const noexcept {
   double uz = (zq - z.start) * inverse_step_[2];
   uz = std::clamp(uz, 0.0, static_cast<double>(z.count - 1));  // below: the sqrt law's constant c
   const std::size_t k = cell_of(uz, z.count);
@@ -231,7 +231,7 @@ double Atlas::v_stick(double radius1, double radius2) const {
 
 double Atlas::v_stick_unchecked(double radius1, double radius2) const noexcept {
   const double r = std::isinf(radius2) ? radius1 : radius1 * radius2 / (radius1 + radius2);
-  const double ln_r = std::log(r);
+  const double ln_r = radius1 > 0.0 && radius2 > 0.0 ? std::log(r) : std::numeric_limits<double>::quiet_NaN();
   if (!(ln_r >= lo_x_ && ln_r <= hi_x_)) return std::numeric_limits<double>::quiet_NaN();
   const double ln_rho =
       std::clamp(std::log(effective_density(material1.density, material2.density, radius1, radius2)), y.start, y.end());
@@ -242,7 +242,7 @@ double Atlas::v_stick_unchecked(double radius1, double radius2) const noexcept {
 
 double Atlas::cor_unchecked(double radius1, double radius2, double velocity) const noexcept {
   const double r = std::isinf(radius2) ? radius1 : radius1 * radius2 / (radius1 + radius2);
-  const double ln_r = std::log(r);
+  const double ln_r = radius1 > 0.0 && radius2 > 0.0 ? std::log(r) : std::numeric_limits<double>::quiet_NaN();
   if (!(ln_r >= lo_x_ && ln_r <= hi_x_ && velocity >= velocity_min * (1 - 1e-12) &&
         velocity <= velocity_max * (1 + 1e-12))) {
     return std::numeric_limits<double>::quiet_NaN();
@@ -255,6 +255,36 @@ double Atlas::cor_unchecked(double radius1, double radius2, double velocity) con
   if (velocity <= vs) return 0.0;
   const double gap = velocity - vs;
   return std::clamp(field_at(s, AtlasField::cor_factor, std::log(gap)) * std::sqrt(gap / velocity), 0.0, 1.0);
+}
+
+void Atlas::cor_many(std::size_t n, const double* radius1, const double* radius2, const double* velocity,
+                     double* out) const noexcept {
+  constexpr std::size_t block = 32;
+  double ln_r[block], ln_rho[block], gap[block];
+  Stencil s[block];
+  for (std::size_t first = 0; first < n; first += block) {
+    const std::size_t m = std::min(block, n - first);
+    const double *r1 = radius1 + first, *r2 = radius2 + first, *v = velocity + first;
+    double* o = out + first;
+    for (std::size_t i = 0; i < m; ++i) {  // the logarithms of R_eff and rho_eff
+      const double r = std::isinf(r2[i]) ? r1[i] : r1[i] * r2[i] / (r1[i] + r2[i]);
+      ln_r[i] = r1[i] > 0.0 && r2[i] > 0.0 ? std::log(r) : std::numeric_limits<double>::quiet_NaN();
+      ln_rho[i] = std::log(effective_density(material1.density, material2.density, r1[i], r2[i]));
+    }
+    for (std::size_t i = 0; i < m; ++i) {  // v_s, and what lies outside or sticks
+      const bool inside = ln_r[i] >= lo_x_ && ln_r[i] <= hi_x_ && v[i] >= velocity_min * (1 - 1e-12) &&
+                          v[i] <= velocity_max * (1 + 1e-12);
+      gap[i] = 0.0;
+      o[i] = inside ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+      if (!inside) continue;
+      locate(ln_r[i], std::clamp(ln_rho[i], y.start, y.end()), s[i]);
+      gap[i] = v[i] - v_stick_at(s[i], ln_r[i], std::clamp(ln_rho[i], y.start, y.end()));
+    }
+    for (std::size_t i = 0; i < m; ++i) {  // eps above v_s
+      if (!(gap[i] > 0.0)) continue;
+      o[i] = std::clamp(field_at(s[i], AtlasField::cor_factor, std::log(gap[i])) * std::sqrt(gap[i] / v[i]), 0.0, 1.0);
+    }
+  }
 }
 
 }  // namespace bounce::analysis

@@ -44,6 +44,11 @@ double bounce_atlas_cor(const bounce_atlas* atlas, double r1, double r2, double 
   return atlas->atlas.cor_unchecked(r1, r2, v);
 }
 
+void bounce_atlas_cor_n(const bounce_atlas* atlas, std::size_t n, const double* r1, const double* r2, const double* v,
+                        double* out) {
+  atlas->atlas.cor_many(n, r1, r2, v, out);
+}
+
 int bounce_atlas_sticks(const bounce_atlas* atlas, double r1, double r2, double v) {
   const double vs = atlas->atlas.v_stick_unchecked(r1, r2);
   const auto& a = atlas->atlas;

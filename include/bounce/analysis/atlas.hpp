@@ -123,6 +123,10 @@ class Atlas {
 
   /// The same without checks, for the C API's hot loop: NaN outside the table.
   double cor_unchecked(double radius1, double radius2, double velocity) const noexcept;
+  /// cor_unchecked at n points, in passes over blocks of them (the logarithms of every point, then
+  /// the sticking velocities, then eps), so that the points' independent work overlaps.
+  void cor_many(std::size_t n, const double* radius1, const double* radius2, const double* velocity,
+                double* out) const noexcept;
   double v_stick_unchecked(double radius1, double radius2) const noexcept;
 
   std::size_t points() const { return x.count * y.count * z.count; }

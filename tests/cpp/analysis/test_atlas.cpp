@@ -271,6 +271,13 @@ TEST(Atlas, CApiAgreesWithTheLibraryAndReturnsNanOutside) {
     EXPECT_EQ(bounce_atlas_sticks(c, 2e-6, inf, v), a.sticks(2e-6, inf, v) ? 1 : 0);
   }
   EXPECT_TRUE(std::isnan(bounce_atlas_cor(c, 2e-6, 7e-6, 100.0)));
+  EXPECT_TRUE(std::isnan(bounce_atlas_cor(c, 2e-5, -3e-5, 1.0)));  // R_eff would be 6e-5 > 0: still refused
+  EXPECT_TRUE(std::isnan(bounce_atlas_v_stick(c, NAN, 3e-6)));
+  const double r1[] = {2e-6, 2e-5, 3e-6}, r2[] = {7e-6, -3e-5, inf}, v[] = {5.0, 1.0, 50.0};
+  double many[3];
+  bounce_atlas_cor_n(c, 3, r1, r2, v, many);
+  EXPECT_EQ(many[0], a.cor(2e-6, 7e-6, 5.0));
+  EXPECT_TRUE(std::isnan(many[1]) && std::isnan(many[2]));
   EXPECT_EQ(bounce_atlas_sticks(c, 1e-8, 1e-8, 1.0), -1);
   bounce_atlas_value value{};
   EXPECT_EQ(bounce_atlas_lookup(c, 2e-6, 7e-6, 100.0, &value), -1);
