@@ -184,6 +184,8 @@ def plot_map(atlas: Atlas, wall: bool = False, points: int = 200, ax=None):
     ax.plot(radii[inside], v_stick[inside], color="white", lw=1.5, label="sticking velocity")
     ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.set_xlim(radii[0], radii[-1])
+    ax.set_ylim(speeds[0], speeds[-1])
     ax.set_xlabel("grain radius [m]" + (" (on a wall)" if wall else " (two equal grains)"))
     ax.set_ylabel("impact speed [m/s]")
     ax.set_title(f"{atlas.model}: coefficient of restitution (grey: the grains stick)")
