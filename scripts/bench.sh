@@ -12,6 +12,8 @@ echo "== viscoelastic collision against scipy"
 /usr/bin/python3 bench/viscoelastic_vs_scipy.py "$build_dir"
 echo "== K13 collisions against scipy, and the two stiff engines"
 /usr/bin/python3 bench/adhesive_vs_scipy.py "$build_dir"
+echo "== the collision atlas from Python against bounce.collide"
+PYTHONPATH="$build_dir/python" /usr/bin/python3 bench/atlas_python.py "$build_dir"
 echo "== bounce fit: K13's 60 x 60 x 100 grid, whole process, 1 and 2 threads"
 /usr/bin/python3 bench/fit_speed.py "$build_dir"
 if [ -x "$build_dir/lammps/lmp" ] && [ -f "$build_dir/lammps/bounceplugin.so" ]; then
