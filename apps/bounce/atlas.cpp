@@ -38,8 +38,9 @@ std::string summary_text(const analysis::Atlas& a) {
   const analysis::AtlasErrors& e = a.errors;
   return fmt::format(
       "atlas of {} ({} nodes in R_eff, {} in rho_eff, {} in speed)\n"
-      "  eps error <= {:.3g} (largest measured {:.3g} at {} collisions), v_stick relative error <= {:.3g}\n",
-      a.model, a.x.count, a.y.count, a.z.count, e.cor, e.cor_measured, e.check_points, e.v_stick);
+      "  eps error <= {:.3g} (largest measured {:.3g} at {} collisions), {}\n",
+      a.model, a.x.count, a.y.count, a.z.count, e.cor, e.cor_measured, e.check_points,
+      a.can_stick ? fmt::format("v_stick relative error <= {:.3g}", e.v_stick) : std::string("the model cannot stick"));
 }
 
 std::function<int()> build(Options& o) {
@@ -47,6 +48,7 @@ std::function<int()> build(Options& o) {
   const bool* json = o.add_flag("json", "print the atlas's description as JSON");
   const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
   return [&o, output, json, progress] {
+    const analysis::AtlasRequest request = api::atlas_request(o.inputs());
     if (!o.given("output")) throw InvalidArgument("output", "(not given)", "-o FILE.h5, the atlas file to write");
     const std::filesystem::path path(*output);
     const auto parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
@@ -54,7 +56,6 @@ std::function<int()> build(Options& o) {
     if (!std::filesystem::is_directory(parent, ec)) {
       throw InvalidArgument("output", *output, "a file in an existing folder");
     }
-    const analysis::AtlasRequest request = api::atlas_request(o.inputs());
     MpiRunner mpi;
     Progress report("bounce atlas build", *progress && mpi.rank() == 0);
     analysis::AtlasRunner runner = mpi.runner(request.threads);

@@ -41,6 +41,13 @@ std::vector<std::string> long_options(const CLI::App& app) {
   return names;
 }
 
+// A command's name as typed: `atlas query` for a subcommand of `atlas`.
+std::string full_name(const CLI::App& command) {
+  const CLI::App* parent = command.get_parent();
+  return parent != nullptr && parent->get_parent() != nullptr ? parent->get_name() + " " + command.get_name()
+                                                              : command.get_name();
+}
+
 // What the user typed that the chosen command does not take, in the one-line rule
 // (`--force = 3 is invalid: expected ...`), naming the commands that do take it, or the
 // command's own option it looks like a typo of (`--velocty`: did you mean --velocity?).
@@ -48,7 +55,7 @@ std::string unexpected_argument(const CLI::App& app, const std::vector<const CLI
   for (const CLI::App* command : commands) {
     if (!command->parsed()) continue;
     const auto extras = command->remaining();
-    const std::string name = command->get_name();
+    const std::string name = full_name(*command);
     const std::vector<std::string> own = long_options(*command);
     if (extras.empty() || !extras.front().starts_with("-")) {
       const std::string word = extras.empty() ? "(none)" : extras.front();
@@ -66,7 +73,7 @@ std::string unexpected_argument(const CLI::App& app, const std::vector<const CLI
                                                                                    : "(given)";
     std::vector<std::string> takers;
     for (const CLI::App* other : commands) {
-      if (other != command && other->get_option_no_throw(flag) != nullptr) takers.push_back(other->get_name());
+      if (other != command && other->get_option_no_throw(flag) != nullptr) takers.push_back(full_name(*other));
     }
     const std::string where = takers.empty() ? fmt::format("see `bounce {} --help`", name)
                                              : fmt::format("commands that take it: {}", fmt::join(takers, ", "));
@@ -81,6 +88,16 @@ std::string unexpected_argument(const CLI::App& app, const std::vector<const CLI
 // option before any command (`bounce --verison`) is compared with bounce's own options.
 std::string missing_command(const CLI::App& app, int argc, const char* const* argv, const std::vector<std::string>& names) {
   const std::string typed = argc > 1 ? argv[1] : "(not given)";
+  const CLI::App* group = nullptr;
+  for (const CLI::App* command : app.get_subcommands({})) group = command->get_name() == typed ? command : group;
+  if (group != nullptr && !group->get_subcommands({}).empty()) {
+    // `bounce atlas` alone, or with a word that is none of its commands
+    std::vector<std::string> words;
+    for (const CLI::App* sub : group->get_subcommands({})) words.push_back(sub->get_name());
+    const std::string word = argc > 2 ? argv[2] : "(not given)";
+    return fmt::format("bounce {} = {} is invalid: expected one of {} (`bounce {} build --help`){}", typed, word,
+                       fmt::join(words, ", "), typed, bounce::did_you_mean(word, words));
+  }
   if (typed.starts_with("-")) {
     return fmt::format("{} = (given) is invalid: expected a command first, one of {}{}", typed, fmt::join(names, ", "),
                        bounce::did_you_mean(typed, long_options(app)));

@@ -82,11 +82,15 @@ Inputs with_materials(Inputs inputs) {
 }
 
 detail::Points atlas_range(const Parameters& own, const char* name, const char* unit) {
-  if (!own.given(name)) throw InvalidArgument(name, "(not given)", fmt::format("MIN:MAX:N in {}", unit));
-  const detail::Points p = detail::parse_points(name, own.text(name), true);
-  if (!(p.lo > 0.0) || !(p.hi > p.lo) || p.n < 4 || p.n > 100000) {
-    throw InvalidArgument(name, own.text(name), fmt::format("MIN:MAX:N with 0 < MIN < MAX in {} and 4 <= N <= 1e5", unit));
+  const std::string allowed = fmt::format("MIN:MAX:N with 0 < MIN < MAX in {} and 4 <= N <= 1e5", unit);
+  if (!own.given(name)) throw InvalidArgument(name, "(not given)", allowed);
+  detail::Points p;
+  try {
+    p = detail::parse_points(name, own.text(name), true);
+  } catch (const InvalidArgument&) {
+    throw InvalidArgument(name, own.text(name), allowed);
   }
+  if (!(p.lo > 0.0) || !(p.hi > p.lo) || p.n < 4 || p.n > 100000) throw InvalidArgument(name, own.text(name), allowed);
   return p;
 }
 
@@ -105,6 +109,12 @@ const CommandSpec& atlas_command(std::string_view name) {
 }
 
 analysis::AtlasRequest atlas_request(const Inputs& typed) {
+  if (!typed.count("radius") && !typed.count("velocity")) {  // a first try: what an atlas needs
+    throw InvalidArgument("radius", "(not given)",
+                          "the ranges of an atlas: --radius MIN:MAX:N (R_eff [m]) and --velocity MIN:MAX:N [m/s], "
+                          "with --model, the materials and -o FILE.h5, e.g. `bounce atlas build --model krijt --tvis "
+                          "1e-11 --materials water-ice --radius 1e-6:1e-5:4 --velocity 0.3:20:5 -o ice.h5`");
+  }
   const detail::Bound b = detail::bind_inputs(atlas_command("atlas build"), with_materials(typed));
   refuse_pair_geometry(b.pair);
   analysis::AtlasRequest r;

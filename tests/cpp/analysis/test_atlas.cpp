@@ -228,6 +228,8 @@ TEST(Atlas, BadBuildInputsAreRefusedNamingThem) {
     }
   };
   refused({{"materials", "water-ice"}, {"velocity", "0.1:10:5"}}, "radius");
+  refused({{"materials", "water-ice"}}, "radius");  // neither range: the message says what an atlas needs
+  refused({{"materials", "water-ice"}, {"radius", "1e-6:1e-5"}, {"velocity", "0.1:10:5"}}, "radius");
   refused({{"materials", "water-ice"}, {"radius", "1e-6:1e-5:5"}, {"velocity", "10:0.1:5"}}, "velocity");
   refused({{"materials", "water-ice"}, {"radius", "1e-6:1e-5:2"}, {"velocity", "0.1:10:5"}}, "radius");
   refused({{"materials", "water-ice"}, {"radius", "1e-6:1e-5:5"}, {"velocity", "0.1:1e4:5"}}, "velocity");  // > c_t
