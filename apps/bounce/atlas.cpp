@@ -59,14 +59,14 @@ std::function<int()> build(Options& o) {
     MpiRunner mpi;
     Progress report("bounce atlas build", *progress && mpi.rank() == 0);
     analysis::AtlasRunner runner = mpi.runner(request.threads);
-    runner.cache_path = *output + ".partial";
+    if (mpi.rank() == 0) runner.cache_path = *output + ".partial";
     runner.progress = [&](std::size_t done, const std::string&) { report(done, 0); };
     const analysis::Atlas atlas = analysis::build_atlas(request, runner);
     if (mpi.rank() != 0) return 0;
     {
       const HoldInterrupts hold;
       analysis::write_atlas(atlas, *output);
-      std::filesystem::remove(runner.cache_path, ec);
+      std::filesystem::remove(*output + ".partial", ec);
     }
     const Record r = api::atlas_record(atlas);
     *json ? print_json(r) : print_text(r, summary_text(atlas) + fmt::format("  written to {}\n", *output));

@@ -25,6 +25,8 @@ std::string describe(const std::exception_ptr& error) {
     return fmt::format("!I\x1f{}\x1f{}\x1f{}\n", e.parameter(), e.value(), e.allowed());
   } catch (const std::exception& e) {
     return fmt::format("!N\x1f{}\n", e.what());
+  } catch (...) {
+    return "!N\x1f" "an unexpected error\n";
   }
 }
 
@@ -53,7 +55,7 @@ MpiRunner::~MpiRunner() = default;
 
 analysis::AtlasRunner MpiRunner::runner(unsigned threads) const {
   analysis::AtlasRunner r;
-  r.writes_cache = rank_ == 0;
+  r.writes_cache = rank_ == 0;  // and reads it: the others receive what it held (share)
   if (size_ == 1) return r;  // threads alone: the library's default
   const std::shared_ptr<Shared> s = shared_;
   const int rank = rank_, size = size_;
@@ -84,8 +86,9 @@ analysis::AtlasRunner MpiRunner::runner(unsigned threads) const {
     work();
     for (auto& t : pool) t.join();
   };
-  r.share = [s](const std::string& lines) {
-    const std::string mine = s->error ? describe(s->error) + lines : lines;
+  r.share = [s](const std::string& lines, std::exception_ptr error) {
+    if (!error) error = s->error;
+    const std::string mine = error ? describe(error) + lines : lines;
     s->error = nullptr;
     const std::string all = s->mpi.allgather(mine);
     for (std::size_t at = all.find('!'); at != std::string::npos; at = all.find('!', at + 1)) {

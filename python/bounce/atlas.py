@@ -13,7 +13,7 @@ outside the atlas raises ValueError naming it and the atlas's range: never an ex
 
 from __future__ import annotations
 
-import math
+import os
 from typing import Callable, Optional, Union
 
 import numpy as np
@@ -26,14 +26,26 @@ Distribution = Union[str, Callable[[np.ndarray, np.ndarray], np.ndarray]]
 
 
 def maxwell_cdf(v, sigma):
-    """P(speed <= v) for a Maxwellian relative speed of scale sigma: the pdf
-    sqrt(2/pi) v^2 / sigma^3 exp(-v^2 / (2 sigma^2)), mean speed sigma sqrt(8/pi)."""
-    x = np.asarray(v, dtype=float) / np.asarray(sigma, dtype=float)
-    from scipy.special import erf
+    """P(speed <= v) for a Maxwellian relative speed of scale sigma > 0: the pdf
+    sqrt(2/pi) v^2 / sigma^3 exp(-v^2 / (2 sigma^2)), mean speed sigma sqrt(8/pi); the CDF is the
+    regularised incomplete gamma function P(3/2, v^2 / (2 sigma^2)) (no cancellation at small v)."""
+    from scipy.special import gammainc
 
+    v, sigma = np.asarray(v, dtype=float), np.asarray(sigma, dtype=float)
+    _require_positive("sigma_v", sigma)
+    if np.any(np.isnan(v)) or np.any(v < 0):
+        bad = v[np.isnan(v) | (v < 0)].flat[0]
+        raise ValueError(f"velocity = {bad} is invalid: expected a speed >= 0 [m/s] (inf allowed)")
+    x = v / sigma
     with np.errstate(over="ignore", invalid="ignore"):
-        out = erf(x / math.sqrt(2.0)) - math.sqrt(2.0 / math.pi) * x * np.exp(-0.5 * x * x)
-    return np.where(np.isinf(x), 1.0, out)
+        return np.where(np.isinf(x), 1.0, gammainc(1.5, 0.5 * x * x))
+
+
+def _require_positive(name, values):
+    values = np.asarray(values, dtype=float)
+    bad = ~(np.isfinite(values) & (values > 0))
+    if np.any(bad):
+        raise ValueError(f"{name} = {values[bad].flat[0]} is invalid: expected a finite number > 0")
 
 
 class Atlas:
@@ -111,9 +123,11 @@ class Atlas:
         above its lowest speed): where more than `max_outside` of the distribution lies
         elsewhere, ValueError names sigma_v and the range."""
         sigma = np.asarray(sigma_v, dtype=float)
-        if np.any(~np.isfinite(sigma)) or np.any(sigma <= 0):
-            bad = sigma[~(np.isfinite(sigma) & (sigma > 0))].flat[0]
-            raise ValueError(f"sigma_v = {bad} is invalid: expected a speed scale > 0 [m/s]")
+        _require_positive("sigma_v", sigma)
+        if not (isinstance(max_outside, (int, float)) and 0 <= max_outside < 1):
+            raise ValueError(f"max_outside = {max_outside!r} is invalid: expected a fraction 0 <= max_outside < 1")
+        if isinstance(nodes, bool) or not isinstance(nodes, int) or not 4 <= nodes <= 1024:
+            raise ValueError(f"nodes = {nodes!r} is invalid: expected an integer 4 <= nodes <= 1024")
         vs = np.asarray(self.v_stick(radius1, radius2), dtype=float)
         lo, hi = self.velocity_range
         if distribution == "maxwell":
@@ -136,19 +150,32 @@ class Atlas:
 
 
 def _cdf_of(pdf, nodes: int):
+    """The CDF of a user pdf(v, sigma): Gauss-Legendre with `nodes` points on each of the pieces
+    [0, 1e-3 sigma], then pieces growing by a factor 2 in units of sigma up to v, so that a pdf
+    concentrated near sigma is resolved however far v lies beyond it."""
     x, w = np.polynomial.legendre.leggauss(nodes)
 
-    def cdf(v, sigma):
-        v = np.asarray(v, dtype=float)
-        sigma = np.asarray(sigma, dtype=float)
-        v_b, s_b = np.broadcast_arrays(v, sigma)
-        half = 0.5 * v_b[..., None]
-        speeds = half * (x + 1.0)
-        values = np.asarray(pdf(speeds, s_b[..., None]), dtype=float)
+    def piece(lo, hi, sigma):
+        half = 0.5 * (hi - lo)
+        speeds = lo[..., None] + half[..., None] * (x + 1.0)
+        values = np.asarray(pdf(speeds, sigma[..., None]), dtype=float)
         if values.shape != speeds.shape or np.any(~np.isfinite(values)) or np.any(values < 0):
             raise ValueError("distribution = (the callable) is invalid: expected a pdf(v, sigma_v) with finite "
                              "values >= 0 that broadcasts over arrays of speeds")
-        return np.sum(values * w, axis=-1) * half[..., 0]
+        return np.sum(values * w, axis=-1) * half
+
+    def cdf(v, sigma):
+        v, sigma = np.broadcast_arrays(np.asarray(v, dtype=float), np.asarray(sigma, dtype=float))
+        total = np.zeros(v.shape)
+        lo = np.zeros(v.shape)
+        hi = np.minimum(v, 1e-3 * sigma)
+        while np.any(hi > lo):
+            total += np.where(hi > lo, piece(lo, hi, sigma), 0.0)
+            lo, hi = hi, np.minimum(v, np.maximum(2.0 * hi, 1e-3 * sigma))
+        if np.any(total > 1.0 + 1e-6):
+            raise ValueError(f"distribution = (the callable) is invalid: expected a normalised pdf (its integral up "
+                             f"to {float(v.flat[int(np.argmax(total))])} m/s is {float(np.max(total)):.6g} > 1)")
+        return total
 
     return cdf
 
@@ -156,9 +183,9 @@ def _cdf_of(pdf, nodes: int):
 def open(path: str, model: Optional[str] = None) -> Atlas:  # noqa: A001  (bounce.atlas.open, as the issue names it)
     """Reads an atlas file. With `model`, a file of another model is refused (ValueError), as
     is a file that is not an atlas or was changed after bounce wrote it (its checksum)."""
-    if not isinstance(path, str):
-        raise TypeError(f"path = {path!r} is invalid: expected a file name (str)")
-    return Atlas(_bounce.open_atlas(path, model), path)
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path = {path!r} is invalid: expected a file name (str or os.PathLike)")
+    return Atlas(_bounce.open_atlas(os.fspath(path), model), os.fspath(path))
 
 
 def plot_map(atlas: Atlas, wall: bool = False, points: int = 200, ax=None):

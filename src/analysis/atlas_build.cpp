@@ -39,7 +39,18 @@ AtlasBuild::AtlasBuild(const AtlasRequest& request, const AtlasRunner& runner)
                                                                *mid.surface_energy())) +
                       5.0 / 6.0 * std::log(r) + 0.5 * std::log(rho);
   }
-  memo_.emplace(runner.cache_path, fingerprint(), !runner.cache_path.empty() && runner.writes_cache);
+  std::exception_ptr error;  // a cache that cannot be read or written: every process learns it
+  try {
+    memo_.emplace(runner.cache_path, fingerprint(), !runner.cache_path.empty() && runner.writes_cache);
+  } catch (...) {
+    error = std::current_exception();
+    memo_.emplace(std::string(), fingerprint(), false);
+  }
+  if (runner_.share) {
+    memo_->merge(runner_.share(memo_->take_new(), error));  // the cache's results on every process
+  } else if (error) {
+    std::rethrow_exception(error);
+  }
 }
 
 std::uint64_t AtlasBuild::fingerprint() const {
@@ -101,7 +112,7 @@ void AtlasBuild::run_jobs(std::size_t count, const std::function<void(std::size_
   } else {
     parallel_for(count, request_.threads, [&](std::size_t i, unsigned) { job(i); });
   }
-  if (runner_.share) memo_->merge(runner_.share(memo_->take_new()));
+  if (runner_.share) memo_->merge(runner_.share(memo_->take_new(), nullptr));
 }
 
 std::array<double, 2> AtlasBuild::node_radii(const AtlasAxis& x, const AtlasAxis& y, std::size_t ix,

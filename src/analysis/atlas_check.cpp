@@ -15,8 +15,9 @@ namespace bounce::analysis::detail {
 namespace {
 
 // Held-out points per round, by kind: on the nodes (z alone), on rows of y nodes (x and z), on
-// columns of x nodes (y and z), anywhere, and at the middle of every x cell (its sticking
-// velocity and one collision: where a cubic errs most); sticking velocities are bisections.
+// columns of x nodes (y and z, with two at the middle of every y cell), anywhere, and at the
+// centre of every x cell (its sticking velocity and one collision); sticking velocities are
+// bisections.
 constexpr int z_points = 100, x_points = 150, y_points = 150, full_points = 600;
 constexpr int threshold_points = 12;
 constexpr int max_level_y = 4, max_level_z = 4;
@@ -80,8 +81,14 @@ std::vector<Probe> AtlasBuild::probes(const Atlas& a, int round) const {
     for (int i = 0; i < scale * x_points + (1 - scale) * threshold_points; ++i) add(x_kind, random_x(), node_y(), speed);
     for (int i = 0; i < scale * y_points + (1 - scale) * threshold_points; ++i) add(y_kind, node_x(), random_y(), speed);
     for (int i = 0; i < scale * full_points + (1 - scale) * threshold_points; ++i) add(anywhere, random_x(), random_y(), speed);
+    // Every x cell at the centre of a y cell: where the tensor cubic errs most (x's error and y's
+    // add there; on a row of y nodes y's vanishes).
     for (std::size_t i = 0; i + 1 < a.x.count; ++i) {
-      add(x_middle, 0.5 * (a.x.value(i) + a.x.value(i + 1)), a.y.value((i * 7 + static_cast<std::size_t>(round)) % a.y.count), speed);
+      const std::size_t j = (i * 7 + static_cast<std::size_t>(round)) % (a.y.count - 1);
+      add(x_middle, 0.5 * (a.x.value(i) + a.x.value(i + 1)), 0.5 * (a.y.value(j) + a.y.value(j + 1)), speed);
+    }
+    for (std::size_t j = 0; j + 1 < a.y.count; ++j) {  // y's worst places, at x nodes (denser where x needed it)
+      for (int k = 0; k < 2; ++k) add(y_kind, node_x(), 0.5 * (a.y.value(j) + a.y.value(j + 1)), speed);
     }
   }
   return out;
@@ -107,8 +114,8 @@ AtlasCheck AtlasBuild::check(const Atlas& a, int round) {
     } else {
       const double e = check_threshold(a, p.radii);
       ++c.thresholds;
-      (p.kind == y_kind ? c.vs_y : p.kind == anywhere ? c.vs_full : c.vs_x) = std::max(
-          p.kind == y_kind ? c.vs_y : p.kind == anywhere ? c.vs_full : c.vs_x, e);
+      double& worst = p.kind == y_kind ? c.vs_y : p.kind == anywhere ? c.vs_full : c.vs_x;
+      worst = std::max(worst, e);
       if (p.kind != y_kind) vs_x.emplace_back(p.ln_r, e);
     }
   }
@@ -160,7 +167,7 @@ Atlas AtlasBuild::run() {
   for (int round = 0;; ++round) {
     compute_nodes(levels);
     Atlas a = assemble(levels);
-    a.prepare("atlas");
+    a.prepare("(the atlas being built)");
     const AtlasCheck c = check(a, round);
     if (refine(levels, c)) continue;
     a.errors.cor_measured = c.cor();

@@ -35,9 +35,10 @@ double relative_slack(double x) { return 1e-12 * std::abs(x); }
 
 double effective_density(double density1, double density2, double radius1, double radius2) {
   if (std::isinf(radius2)) return density1;
-  // rho_eff = 3 m_eff / (4 pi R_eff^3) with m_i = 4 pi rho_i R_i^3 / 3
-  const double r13 = radius1 * radius1 * radius1, r23 = radius2 * radius2 * radius2, s = radius1 + radius2;
-  return density1 * density2 * s * s * s / (density1 * r13 + density2 * r23);
+  // rho_eff = 3 m_eff / (4 pi R_eff^3) = rho1 rho2 / (rho1 a^3 + rho2 b^3), a = R1/(R1+R2),
+  // b = R2/(R1+R2): no overflow for any finite radii (1e300 m for a wall gives rho1).
+  const double a = radius1 / (radius1 + radius2), b = radius2 / (radius1 + radius2);
+  return density1 * density2 / (density1 * a * a * a + density2 * b * b * b);
 }
 
 struct Atlas::Stencil {
@@ -53,7 +54,7 @@ double Atlas::node_v_stick(std::size_t ix, std::size_t iy) const {
 
 void Atlas::prepare(const std::string& source) {
   const auto bad = [&](const std::string& what) {
-    throw InvalidArgument(source, "(the file)", "an atlas written by bounce atlas build: " + what);
+    throw InvalidArgument("atlas", source, "an atlas written by bounce atlas build: " + what);
   };
   if (x.count < 4 || y.count < 4 || z.count < 4) bad("every axis has at least 4 nodes");
   for (const AtlasAxis* a : {&x, &y, &z}) {
@@ -67,6 +68,9 @@ void Atlas::prepare(const std::string& source) {
   if (values.size() != atlas_field_count * points()) bad(fmt::format("{} values per grid point", atlas_field_count));
   for (double v : values) {
     if (!std::isfinite(v)) bad("finite values");
+  }
+  for (const Material* m : {&material1, &material2}) {
+    if (!(m->density > 0.0 && m->density < 1e30)) bad("material densities between 0 and 1e30 kg/m^3");
   }
   for (std::size_t i = 0; i < nxy; ++i) {
     if (!std::isfinite(stick_ratio[i]) || defined[i] > 1) bad("finite sticking velocities and 0/1 flags");
@@ -170,40 +174,64 @@ void Atlas::prepare_x(const std::function<void(const std::string&)>& bad) {
   return sum;
 }
 
-std::array<double, 2> Atlas::reduced(double radius1, double radius2) const {
+// ln R_eff, or NaN for radii that are not > 0 or whose R_eff lies outside the atlas; and ln rho_eff
+// held inside the y axis (which spans every pair of the materials: only round-off is clamped).
+Atlas::Point Atlas::point(double radius1, double radius2) const noexcept {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!(radius1 > 0.0 && radius2 > 0.0 && std::isfinite(radius1))) return {nan, nan};
+  // R_eff, symmetric in the radii and without overflow (1e300 m is a wall).
+  const double r = std::isinf(radius2) ? radius1 : 1.0 / (1.0 / radius1 + 1.0 / radius2);
+  const double ln_r = std::log(r);
+  const double ln_rho = std::log(effective_density(material1.density, material2.density, radius1, radius2));
+  return {ln_r >= lo_x_ && ln_r <= hi_x_ ? ln_r : nan, std::clamp(ln_rho, y.start, y.end())};
+}
+
+bool Atlas::speed_inside(double velocity) const noexcept {
+  return velocity >= velocity_min * (1 - 1e-12) && velocity <= velocity_max * (1 + 1e-12);
+}
+
+// v_s as the atlas states it: above its top speed, only that the grains stick at all its speeds.
+double Atlas::stated_v_stick(double v_s) const noexcept {
+  return v_s > velocity_max ? std::numeric_limits<double>::infinity() : v_s;
+}
+
+Atlas::Point Atlas::reduced(double radius1, double radius2) const {
   if (!(radius1 > 0.0) || !std::isfinite(radius1)) {
     throw InvalidArgument("radius1", fmt::format("{}", radius1), "a finite radius > 0 [m]");
   }
   if (!(radius2 > 0.0) || std::isnan(radius2)) {
     throw InvalidArgument("radius2", fmt::format("{}", radius2), "a radius > 0 [m] (inf: a wall)");
   }
-  const double r = std::isinf(radius2) ? radius1 : radius1 * radius2 / (radius1 + radius2);
-  const double ln_r = std::log(r);
-  if (ln_r < lo_x_ || ln_r > hi_x_) {
-    throw InvalidArgument("radius", fmt::format("{} (R_eff = {} m)", std::isinf(radius2) ? fmt::format("{}", radius1) : fmt::format("{}, {}", radius1, radius2), r),
+  const Point p = point(radius1, radius2);
+  if (std::isnan(p.ln_r)) {
+    const double r = std::isinf(radius2) ? radius1 : 1.0 / (1.0 / radius1 + 1.0 / radius2);
+    throw InvalidArgument("radius",
+                          fmt::format("{} (R_eff = {} m)", std::isinf(radius2) ? fmt::format("{}", radius1)
+                                                                               : fmt::format("{}, {}", radius1, radius2),
+                                      r),
                           fmt::format("a reduced radius inside the atlas's {} .. {} m (no extrapolation)", radius_min,
                                       radius_max));
   }
-  return {r, effective_density(material1.density, material2.density, radius1, radius2)};
+  return p;
 }
 
 AtlasValue Atlas::evaluate(double radius1, double radius2, double velocity, bool fields) const {
-  const auto [r, rho] = reduced(radius1, radius2);
-  if (!(velocity >= velocity_min * (1 - 1e-12) && velocity <= velocity_max * (1 + 1e-12))) {
+  const Point p = reduced(radius1, radius2);
+  if (!speed_inside(velocity)) {
     throw InvalidArgument("velocity", fmt::format("{}", velocity),
                           fmt::format("an impact speed inside the atlas's {} .. {} m/s (no extrapolation)",
                                       velocity_min, velocity_max));
   }
-  const double ln_r = std::log(r), ln_rho = std::clamp(std::log(rho), y.start, y.end());
   Stencil s;
-  locate(ln_r, ln_rho, s);
+  locate(p.ln_r, p.ln_rho, s);
   AtlasValue out;
-  out.v_stick = v_stick_at(s, ln_r, ln_rho);
-  if (velocity <= out.v_stick) {
+  const double v_s = v_stick_at(s, p.ln_r, p.ln_rho);
+  out.v_stick = stated_v_stick(v_s);
+  if (velocity <= v_s) {
     out.sticks = true;
     return out;
   }
-  const double gap = velocity - out.v_stick, zq = std::log(gap);
+  const double gap = velocity - v_s, zq = std::log(gap);
   out.cor = std::clamp(field_at(s, AtlasField::cor_factor, zq) * std::sqrt(gap / velocity), 0.0, 1.0);
   if (fields) {
     out.contact_time = std::exp(field_at(s, AtlasField::ln_contact_time, zq));
@@ -222,67 +250,57 @@ bool Atlas::sticks(double radius1, double radius2, double velocity) const {
 }
 
 double Atlas::v_stick(double radius1, double radius2) const {
-  const auto [r, rho] = reduced(radius1, radius2);
-  const double ln_r = std::log(r), ln_rho = std::clamp(std::log(rho), y.start, y.end());
+  const Point p = reduced(radius1, radius2);
   Stencil s;
-  locate(ln_r, ln_rho, s);
-  return v_stick_at(s, ln_r, ln_rho);
+  locate(p.ln_r, p.ln_rho, s);
+  return stated_v_stick(v_stick_at(s, p.ln_r, p.ln_rho));
 }
 
 double Atlas::v_stick_unchecked(double radius1, double radius2) const noexcept {
-  const double r = std::isinf(radius2) ? radius1 : radius1 * radius2 / (radius1 + radius2);
-  const double ln_r = radius1 > 0.0 && radius2 > 0.0 ? std::log(r) : std::numeric_limits<double>::quiet_NaN();
-  if (!(ln_r >= lo_x_ && ln_r <= hi_x_)) return std::numeric_limits<double>::quiet_NaN();
-  const double ln_rho =
-      std::clamp(std::log(effective_density(material1.density, material2.density, radius1, radius2)), y.start, y.end());
+  const Point p = point(radius1, radius2);
+  if (std::isnan(p.ln_r)) return p.ln_r;
   Stencil s;
-  locate(ln_r, ln_rho, s);
-  return v_stick_at(s, ln_r, ln_rho);
+  locate(p.ln_r, p.ln_rho, s);
+  return stated_v_stick(v_stick_at(s, p.ln_r, p.ln_rho));
+}
+
+int Atlas::sticks_unchecked(double radius1, double radius2, double velocity) const noexcept {
+  const Point p = point(radius1, radius2);
+  if (std::isnan(p.ln_r) || !speed_inside(velocity)) return -1;
+  Stencil s;
+  locate(p.ln_r, p.ln_rho, s);
+  return velocity <= v_stick_at(s, p.ln_r, p.ln_rho) ? 1 : 0;
 }
 
 double Atlas::cor_unchecked(double radius1, double radius2, double velocity) const noexcept {
-  const double r = std::isinf(radius2) ? radius1 : radius1 * radius2 / (radius1 + radius2);
-  const double ln_r = radius1 > 0.0 && radius2 > 0.0 ? std::log(r) : std::numeric_limits<double>::quiet_NaN();
-  if (!(ln_r >= lo_x_ && ln_r <= hi_x_ && velocity >= velocity_min * (1 - 1e-12) &&
-        velocity <= velocity_max * (1 + 1e-12))) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  const double ln_rho =
-      std::clamp(std::log(effective_density(material1.density, material2.density, radius1, radius2)), y.start, y.end());
-  Stencil s;
-  locate(ln_r, ln_rho, s);
-  const double vs = v_stick_at(s, ln_r, ln_rho);
-  if (velocity <= vs) return 0.0;
-  const double gap = velocity - vs;
-  return std::clamp(field_at(s, AtlasField::cor_factor, std::log(gap)) * std::sqrt(gap / velocity), 0.0, 1.0);
+  double out = 0.0;
+  cor_many(1, &radius1, &radius2, &velocity, &out);
+  return out;
 }
 
 void Atlas::cor_many(std::size_t n, const double* radius1, const double* radius2, const double* velocity,
                      double* out) const noexcept {
   constexpr std::size_t block = 32;
-  double ln_r[block], ln_rho[block], gap[block];
+  Point p[block];
+  double gap[block], speed[block];
   Stencil s[block];
   for (std::size_t first = 0; first < n; first += block) {
     const std::size_t m = std::min(block, n - first);
-    const double *r1 = radius1 + first, *r2 = radius2 + first, *v = velocity + first;
-    double* o = out + first;
-    for (std::size_t i = 0; i < m; ++i) {  // the logarithms of R_eff and rho_eff
-      const double r = std::isinf(r2[i]) ? r1[i] : r1[i] * r2[i] / (r1[i] + r2[i]);
-      ln_r[i] = r1[i] > 0.0 && r2[i] > 0.0 ? std::log(r) : std::numeric_limits<double>::quiet_NaN();
-      ln_rho[i] = std::log(effective_density(material1.density, material2.density, r1[i], r2[i]));
+    for (std::size_t i = 0; i < m; ++i) {  // the logarithms of R_eff and rho_eff (inputs read here: out may alias them)
+      p[i] = point(radius1[first + i], radius2[first + i]);
+      speed[i] = velocity[first + i];
     }
-    for (std::size_t i = 0; i < m; ++i) {  // v_s, and what lies outside or sticks
-      const bool inside = ln_r[i] >= lo_x_ && ln_r[i] <= hi_x_ && v[i] >= velocity_min * (1 - 1e-12) &&
-                          v[i] <= velocity_max * (1 + 1e-12);
-      gap[i] = 0.0;
-      o[i] = inside ? 0.0 : std::numeric_limits<double>::quiet_NaN();
-      if (!inside) continue;
-      locate(ln_r[i], std::clamp(ln_rho[i], y.start, y.end()), s[i]);
-      gap[i] = v[i] - v_stick_at(s[i], ln_r[i], std::clamp(ln_rho[i], y.start, y.end()));
+    for (std::size_t i = 0; i < m; ++i) {  // v_s: gap > 0 bounces, 0 sticks, NaN outside
+      gap[i] = std::numeric_limits<double>::quiet_NaN();
+      if (std::isnan(p[i].ln_r) || !speed_inside(speed[i])) continue;
+      locate(p[i].ln_r, p[i].ln_rho, s[i]);
+      gap[i] = std::max(0.0, speed[i] - v_stick_at(s[i], p[i].ln_r, p[i].ln_rho));
     }
     for (std::size_t i = 0; i < m; ++i) {  // eps above v_s
-      if (!(gap[i] > 0.0)) continue;
-      o[i] = std::clamp(field_at(s[i], AtlasField::cor_factor, std::log(gap[i])) * std::sqrt(gap[i] / v[i]), 0.0, 1.0);
+      const double g = gap[i];
+      out[first + i] = g > 0.0 ? std::clamp(field_at(s[i], AtlasField::cor_factor, std::log(g)) * std::sqrt(g / speed[i]),
+                                            0.0, 1.0)
+                               : g;  // 0 (sticks) or NaN (outside)
     }
   }
 }

@@ -37,6 +37,7 @@ std::uint64_t fnv1a(const std::string& text) {
 
 AtlasMemo::AtlasMemo(std::string path, std::uint64_t fingerprint, bool writes) : path_(std::move(path)) {
   if (path_.empty()) return;
+  bool cut = false;
   const std::string header = fmt::format("{} {:016x}", magic, fingerprint);
   if (std::ifstream in(path_); in) {
     std::string line;
@@ -46,7 +47,12 @@ AtlasMemo::AtlasMemo(std::string path, std::uint64_t fingerprint, bool writes) :
                             "the cache of this very build (it was written by another build, or another bounce "
                             "version: delete it, or give the options it was started with)");
     }
-    while (std::getline(in, line)) parse(line);
+    while (std::getline(in, line)) {
+      parse(line);
+      if (line.starts_with("w ")) seen_warnings_.insert(line);
+      new_lines_ += line + "\n";  // shared with the other processes at the start (MPI)
+    }
+    cut = !line.empty();  // the last line has no newline: an interrupt cut it
   } else if (writes) {
     std::ofstream(path_) << header << '\n';
   }
@@ -55,6 +61,7 @@ AtlasMemo::AtlasMemo(std::string path, std::uint64_t fingerprint, bool writes) :
   if (file_ == nullptr) {
     throw InvalidArgument("cache", path_, fmt::format("a file bounce can write ({})", std::strerror(errno)));
   }
+  if (cut) std::fputs("\n", file_);  // the next result on a line of its own
 }
 
 AtlasMemo::~AtlasMemo() {
@@ -124,7 +131,9 @@ void AtlasMemo::put(const Key& k, const AtlasCollision& c, const std::vector<std
   for (const std::string& w : warnings) {
     std::string one = w;
     for (char& ch : one) ch = ch == '\n' ? ' ' : ch;
-    line += fmt::format("w {} {} ;\n", key_text(k), one);
+    const std::string warning = fmt::format("w {} {} ;", key_text(k), one);
+    seen_warnings_.insert(warning);
+    line += warning + "\n";
   }
   warnings_.add(k[2], warnings);
   add_line(line, true);
@@ -147,9 +156,10 @@ void AtlasMemo::merge(const std::string& lines) {
   const std::lock_guard lock(mutex_);
   while (std::getline(in, line)) {
     const std::size_t before = collisions_.size() + thresholds_.size();
+    const bool warning = line.starts_with("w ") && seen_warnings_.insert(line).second;
     parse(line);
     // Another rank's result: into this rank's file too (rank 0 keeps the cache).
-    if (collisions_.size() + thresholds_.size() != before || line.starts_with("w ")) add_line(line + "\n", false);
+    if (collisions_.size() + thresholds_.size() != before || warning) add_line(line + "\n", false);
   }
 }
 
@@ -161,17 +171,6 @@ std::size_t AtlasMemo::computed() const {
 std::vector<std::string> AtlasMemo::warnings() const {
   const std::lock_guard lock(mutex_);
   return warnings_.list();
-}
-
-void AtlasMemo::remove_file() {
-  if (file_ != nullptr) {
-    std::fclose(file_);
-    file_ = nullptr;
-  }
-  if (!path_.empty()) {
-    std::error_code ignored;
-    std::filesystem::remove(path_, ignored);
-  }
 }
 
 }  // namespace bounce::analysis::detail

@@ -9,6 +9,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -43,14 +44,13 @@ class AtlasMemo {
   void put(const Key& k, const AtlasCollision& c, const std::vector<std::string>& warnings);
   void put(const Key& k, const AtlasThreshold& t);
 
-  /// The lines added since the last call (for sharing among MPI ranks), and merging others'.
+  /// The lines added (or read from the file) since the last call, for sharing among MPI ranks,
+  /// and merging others'.
   std::string take_new();
   void merge(const std::string& lines);
 
   std::size_t computed() const;  ///< results added by this build (not read back)
   std::vector<std::string> warnings() const;
-  /// Deletes the cache file (the atlas was written).
-  void remove_file();
 
  private:
   void add_line(const std::string& line, bool fresh);
@@ -61,6 +61,7 @@ class AtlasMemo {
   std::map<Key, AtlasCollision> collisions_;
   std::map<Key, AtlasThreshold> thresholds_;
   WarningLog warnings_;
+  std::set<std::string> seen_warnings_;  ///< warning lines written or merged (each once)
   std::string new_lines_;
   std::size_t computed_ = 0;
 };

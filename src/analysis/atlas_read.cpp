@@ -8,7 +8,9 @@
 #include <fmt/format.h>
 
 #include "bounce/analysis/atlas.hpp"
+#include "atlas_grid.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/pair/material.hpp"
 
 namespace bounce::analysis {
 
@@ -21,7 +23,7 @@ class Reader {
   explicit Reader(std::string path) : path_(std::move(path)) {}
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw InvalidArgument(path_, "(the file)", "an atlas written by bounce atlas build: " + what);
+    throw InvalidArgument("atlas", path_, "an atlas written by bounce atlas build: " + what);
   }
 
   hid_t check(hid_t id, const std::string& what) const {
@@ -29,17 +31,29 @@ class Reader {
     return id;
   }
 
+  // An attribute holds one value (a larger one would overrun what reads it).
+  void require_single(hid_t attr, const char* name) const {
+    const hid_t space = H5Aget_space(attr);
+    const hssize_t n = H5Sget_simple_extent_npoints(space);
+    H5Sclose(space);
+    if (n != 1) {
+      H5Aclose(attr);
+      fail(fmt::format("the attribute {} holds one value (it has {})", name, n));
+    }
+  }
+
   std::string text(hid_t where, const char* name) const {
     const hid_t attr = check(H5Aopen(where, name, H5P_DEFAULT), fmt::format("the attribute {}", name));
+    require_single(attr, name);
     const hid_t type = H5Aget_type(attr);
     std::string out;
-    if (H5Tget_class(type) == H5T_STRING && !H5Tis_variable_str(type)) {
+    if (H5Tget_class(type) == H5T_STRING && !H5Tis_variable_str(type) && H5Tget_size(type) <= (1U << 20)) {
       out.resize(H5Tget_size(type));
       if (H5Aread(attr, type, out.data()) < 0) out.clear();
     } else {
       H5Tclose(type);
       H5Aclose(attr);
-      fail(fmt::format("the attribute {} is not a fixed-length string", name));
+      fail(fmt::format("the attribute {} is a fixed-length string of at most 1 MiB", name));
     }
     H5Tclose(type);
     H5Aclose(attr);
@@ -49,6 +63,7 @@ class Reader {
 
   double number(hid_t where, const char* name) const {
     const hid_t attr = check(H5Aopen(where, name, H5P_DEFAULT), fmt::format("the attribute {}", name));
+    require_single(attr, name);
     double x = NAN;
     const herr_t r = H5Aread(attr, H5T_NATIVE_DOUBLE, &x);
     H5Aclose(attr);
@@ -66,6 +81,13 @@ class Reader {
     if (n < 0 || static_cast<std::size_t>(n) != expected) {
       H5Dclose(set);
       fail(fmt::format("{} has {} values, expected {}", name, n, expected));
+    }
+    // What the file really stores (bounce writes it whole, uncompressed): a small file that
+    // declares a huge dataset it never wrote would otherwise cost that memory to refuse.
+    const hsize_t stored = H5Dget_storage_size(set);
+    if (expected > (std::size_t{1} << 28) || stored < expected * sizeof(T)) {
+      H5Dclose(set);
+      fail(fmt::format("{} stores its {} values ({} bytes stored)", name, expected, stored));
     }
     out.resize(expected);
     const herr_t r = H5Dread(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
@@ -89,8 +111,10 @@ class Reader {
     m.density = scalar(g, "density");
     if (H5Lexists(g, "surface_energy", H5P_DEFAULT) > 0) m.surface_energy = scalar(g, "surface_energy");
     H5Gclose(g);
-    if (!(m.youngs_modulus > 0.0 && m.density > 0.0 && m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5)) {
-      fail(fmt::format("{} has a material with E > 0, density > 0, -1 < nu < 0.5", name));
+    try {
+      validate(m);
+    } catch (const InvalidArgument& e) {
+      fail(fmt::format("{} has a valid material ({})", name, e.what()));
     }
     return m;
   }
@@ -161,6 +185,10 @@ void read_contents(const Reader& r, hid_t file, Atlas& a) {
   a.density_min = r.scalar(ranges, "effective_density_min");
   a.density_max = r.scalar(ranges, "effective_density_max");
   H5Gclose(ranges);
+  const auto densities = detail::density_range(a.material1.density, a.material2.density);
+  if (!(std::abs(a.density_min / densities[0] - 1.0) <= 1e-9 && std::abs(a.density_max / densities[1] - 1.0) <= 1e-9)) {
+    r.fail("the effective densities of its materials");
+  }
 }
 
 void read_grid(const Reader& r, hid_t file, Atlas& a) {
@@ -182,9 +210,14 @@ void read_grid(const Reader& r, hid_t file, Atlas& a) {
   e.v_stick_measured = r.scalar(errors, "v_stick_measured");
   e.contact_time = r.scalar(errors, "contact_time_measured");
   e.energy = r.scalar(errors, "energy_fraction_measured");
-  e.check_points = static_cast<long>(r.scalar(errors, "check_points"));
-  e.v_stick_points = static_cast<long>(r.scalar(errors, "v_stick_points"));
+  const double points = r.scalar(errors, "check_points"), thresholds = r.scalar(errors, "v_stick_points");
   e.tolerance = r.scalar(errors, "tolerance");
+  for (double x : {e.cor, e.cor_measured, e.v_stick, e.v_stick_measured, e.contact_time, e.energy, e.tolerance, points,
+                   thresholds}) {
+    if (!(x >= 0.0 && x <= 1e12)) r.fail("errors that are numbers >= 0");
+  }
+  e.check_points = static_cast<long>(points);
+  e.v_stick_points = static_cast<long>(thresholds);
   H5Gclose(errors);
 }
 

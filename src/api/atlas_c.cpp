@@ -28,12 +28,15 @@ extern "C" {
 
 bounce_atlas* bounce_atlas_open(const char* path, const char* model, char* error, std::size_t error_size) {
   try {
-    if (path == nullptr) throw std::invalid_argument("path = NULL: expected an atlas file");
+    if (path == nullptr) throw std::invalid_argument("path = NULL is invalid: expected an atlas file");
     auto* handle = new bounce_atlas{bounce::analysis::read_atlas(path, model != nullptr ? model : "")};
     copy_message("", error, error_size);
     return handle;
   } catch (const std::exception& e) {
     copy_message(e.what(), error, error_size);
+    return nullptr;
+  } catch (...) {
+    copy_message("bounce_atlas_open: an unexpected error", error, error_size);
     return nullptr;
   }
 }
@@ -50,10 +53,7 @@ void bounce_atlas_cor_n(const bounce_atlas* atlas, std::size_t n, const double* 
 }
 
 int bounce_atlas_sticks(const bounce_atlas* atlas, double r1, double r2, double v) {
-  const double vs = atlas->atlas.v_stick_unchecked(r1, r2);
-  const auto& a = atlas->atlas;
-  if (std::isnan(vs) || !(v >= a.velocity_min * (1 - 1e-12) && v <= a.velocity_max * (1 + 1e-12))) return -1;
-  return v <= vs ? 1 : 0;
+  return atlas->atlas.sticks_unchecked(r1, r2, v);
 }
 
 double bounce_atlas_v_stick(const bounce_atlas* atlas, double r1, double r2) {
@@ -67,7 +67,7 @@ int bounce_atlas_lookup(const bounce_atlas* atlas, double r1, double r2, double 
     *out = {got.cor, got.sticks ? 1 : 0, got.v_stick, got.contact_time.value_or(nan), got.bulk_fraction.value_or(nan),
             got.crack_fraction.value_or(nan)};
     return 0;
-  } catch (const std::exception&) {
+  } catch (...) {
     return -1;
   }
 }

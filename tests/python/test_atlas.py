@@ -74,6 +74,10 @@ def test_p_stick_is_the_maxwellian_probability_below_v_stick(atlas):
     def maxwell(v, s):
         return math.sqrt(2 / math.pi) * v * v / s**3 * np.exp(-v * v / (2 * s * s))
     assert atlas.p_stick(r1, r2, sigma, distribution=maxwell) == pytest.approx(closed, rel=1e-9)
+    # A pdf concentrated far below the atlas's top speed (the quadrature follows sigma).
+    assert atlas.p_stick(r1, r2, 0.5, distribution=maxwell) == pytest.approx(atlas.p_stick(r1, r2, 0.5), rel=1e-9)
+    # Small speeds: no cancellation (P(3/2, x^2/2) ~ x^3 / (3 sqrt(pi/2)) ... = sqrt(2/pi) x^3 / 3).
+    assert bounce.atlas.maxwell_cdf(1e-8, 1.0) == pytest.approx(math.sqrt(2 / math.pi) * 1e-24 / 3, rel=1e-6)
     grid = atlas.p_stick(np.full((2, 4, 1), r1), np.full((2, 1, 4), r2), np.array([2.5, 3.0])[:, None, None])
     assert grid.shape == (2, 4, 4) and np.all((grid >= 0) & (grid <= 1))
 
@@ -97,6 +101,11 @@ def test_the_file_describes_itself_to_h5py(path, atlas):
     (lambda a: a.p_stick(3e-6, 4e-6, 30.0), "sigma_v"),   # much of it above 20 m/s
     (lambda a: a.p_stick(np.full((2, 3), 3e-6), np.full((2, 3), 4e-6), np.full((2, 3), 30.0)), "sigma_v"),
     (lambda a: a.p_stick(3e-6, 4e-6, 5.0, distribution="gauss"), "distribution"),
+    (lambda a: a.p_stick(3e-6, 4e-6, 3.0, max_outside=float("nan")), "max_outside"),
+    (lambda a: a.p_stick(3e-6, 4e-6, 3.0, nodes=2), "nodes"),
+    (lambda a: a.p_stick(3e-6, 4e-6, 3.0, distribution=lambda v, s: 3 * np.exp(-v / s) / s), "distribution"),
+    (lambda a: bounce.atlas.maxwell_cdf(-1.0, 1.0), "velocity"),
+    (lambda a: bounce.atlas.maxwell_cdf(1.0, 0.0), "sigma_v"),
 ])
 def test_bad_queries_name_the_value_and_the_range(atlas, call, name):
     with pytest.raises(ValueError, match=rf"^{name} = .+ is invalid: expected .+"):
@@ -112,6 +121,32 @@ def test_other_files_are_refused(path, tmp_path):
         bounce.atlas.open(str(text))
     with pytest.raises(TypeError, match="path = 3 is invalid"):
         bounce.atlas.open(3)
+    import pathlib
+    assert bounce.atlas.open(pathlib.Path(path)).model == "krijt"
+
+
+def test_hostile_files_are_refused(path, tmp_path):
+    """Files with valid HDF5 that would make a careless reader overrun a buffer or allocate
+    gigabytes: an array where one value is expected, a huge dataset declared and never written."""
+    h5py = pytest.importorskip("h5py")
+    array = tmp_path / "array.h5"
+    shutil.copy(path, array)
+    with h5py.File(array, "r+") as f:
+        del f.attrs["format_version"]
+        f.attrs["format_version"] = np.ones(4000)
+    with pytest.raises(ValueError, match="format_version holds one value"):
+        bounce.atlas.open(str(array))
+    huge = tmp_path / "huge.h5"
+    shutil.copy(path, huge)
+    with h5py.File(huge, "r+") as f:
+        n = f["grid/values"].shape
+        del f["grid/values"]
+        f.create_dataset("grid/values", shape=(4, n[1], n[2], n[3] * 1000), dtype="f8", chunks=True)
+        del f["grid/z_ln_velocity_above_v_stick"]
+        z = f.create_dataset("grid/z_ln_velocity_above_v_stick", data=np.arange(n[3] * 1000, dtype=float))
+        z.attrs["start"], z.attrs["step"], z.attrs["unit"] = 0.0, 1.0, np.bytes_("ln(m/s)")
+    with pytest.raises(ValueError, match="stores its"):
+        bounce.atlas.open(str(huge))
 
 
 BUILD = ["atlas", "build", "--model", "krijt", "--tvis", "1e-11", "--materials", "water-ice",

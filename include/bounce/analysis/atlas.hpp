@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <string>
@@ -75,7 +76,7 @@ struct AtlasErrors {
 struct AtlasValue {
   double cor = 0.0;
   bool sticks = false;
-  double v_stick = 0.0;  ///< [m/s]; +inf where the grains stick up to the sound speed
+  double v_stick = 0.0;  ///< [m/s]; +inf where the grains stick at every speed of the atlas (v_s > v_max)
   /// Contact time [s] and energy fractions: none for a sticking collision (the grains stay
   /// together; docs/atlas.md).
   std::optional<double> contact_time, bulk_fraction, crack_fraction;
@@ -118,8 +119,6 @@ class Atlas {
   bool sticks(double radius1, double radius2, double velocity) const;
   double v_stick(double radius1, double radius2) const;
   AtlasValue at(const AtlasQuery& q) const;
-  /// R_eff and rho_eff of a pair of radii (R2 = inf: a wall), checked against the table's ranges.
-  std::array<double, 2> reduced(double radius1, double radius2) const;
 
   /// The same without checks, for the C API's hot loop: NaN outside the table.
   double cor_unchecked(double radius1, double radius2, double velocity) const noexcept;
@@ -128,6 +127,7 @@ class Atlas {
   void cor_many(std::size_t n, const double* radius1, const double* radius2, const double* velocity,
                 double* out) const noexcept;
   double v_stick_unchecked(double radius1, double radius2) const noexcept;
+  int sticks_unchecked(double radius1, double radius2, double velocity) const noexcept;  ///< 1, 0, -1 outside
 
   std::size_t points() const { return x.count * y.count * z.count; }
   /// v_ref at (ln R_eff, ln rho_eff) [m/s].
@@ -142,6 +142,14 @@ class Atlas {
 
  private:
   struct Stencil;
+  struct Point {
+    double ln_r, ln_rho;
+  };
+  Point point(double radius1, double radius2) const noexcept;
+  /// point(), with InvalidArgument naming radii outside the atlas.
+  Point reduced(double radius1, double radius2) const;
+  bool speed_inside(double velocity) const noexcept;
+  double stated_v_stick(double v_s) const noexcept;
   double lo_x_ = 0.0, hi_x_ = 0.0;
   std::array<double, 3> inverse_step_{};  ///< 1 / step of x (its index bins), y, z (a lookup multiplies)
   std::vector<std::uint32_t> x_cell_;      ///< per bin of width x.step: the cell at the bin's start
@@ -183,8 +191,10 @@ struct AtlasRunner {
   /// results are its own (the cache keeps them), so any split among processes works as long
   /// as every process ends with every job done (the CLI's MPI runner shares them).
   std::function<void(std::size_t count, const std::function<void(std::size_t)>& job)> distribute;
-  /// After each batch: this process's new results (cache lines) in, every process's out.
-  std::function<std::string(const std::string& mine)> share;
+  /// After each batch: this process's new results (cache lines) and its error, if any, in; every
+  /// process's results out, or every process's first error raised on all of them (so that none
+  /// waits for another that failed). First called with what the cache held (MPI: rank 0's).
+  std::function<std::string(const std::string& mine, std::exception_ptr error)> share;
 };
 
 /// Builds the atlas, refining each axis until the interpolant agrees with direct collisions

@@ -200,6 +200,30 @@ TEST(Atlas, AFileThatIsNoAtlasIsRefused) {
   EXPECT_THROW(read_atlas(temp_path("missing.h5")), InvalidArgument);
 }
 
+// A radius of 1e300 m is a wall by another name: no overflow in R_eff or rho_eff.
+TEST(Atlas, AHugeSecondRadiusIsAWall) {
+  const Atlas& a = krijt_atlas();
+  for (double r2 : {1e101, 1e103, 1e300}) {
+    EXPECT_NEAR(a.v_stick(3e-6, r2), a.v_stick(3e-6, inf), 1e-12 * a.v_stick(3e-6, inf)) << r2;
+    EXPECT_NEAR(a.cor(3e-6, r2, 10.0), a.cor(3e-6, inf, 10.0), 1e-12) << r2;
+  }
+  EXPECT_DOUBLE_EQ(effective_density(1000.0, 2650.0, 1e-6, 1e300), 1000.0);
+}
+
+// Outputs may be written over an input (out == v): every input is read before its output.
+TEST(Atlas, ManyLookupsMayWriteOverTheirSpeeds) {
+  const Atlas& a = krijt_atlas();
+  double r1[40], r2[40], v[40], expected[40];
+  for (int i = 0; i < 40; ++i) {
+    r1[i] = 2e-6 + 1e-7 * i;
+    r2[i] = 5e-6;
+    v[i] = 0.5 + 0.45 * i;
+    expected[i] = a.cor(r1[i], r2[i], v[i]);
+  }
+  a.cor_many(40, r1, r2, v, v);
+  for (int i = 0; i < 40; ++i) EXPECT_EQ(v[i], expected[i]) << i;
+}
+
 TEST(Atlas, AQueryOutsideTheTableNamesTheValueAndTheRange) {
   const Atlas& a = krijt_atlas();
   try {
