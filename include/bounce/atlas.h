@@ -30,8 +30,8 @@ void bounce_atlas_cor_n(const bounce_atlas *atlas, size_t n, const double *r1, c
                         double *out);
 /* 1 stick, 0 bounce, -1 outside the atlas. */
 int bounce_atlas_sticks(const bounce_atlas *atlas, double r1, double r2, double v);
-/* The sticking velocity; INFINITY where the grains stick at every speed (up to the sound
- * speed); 0 for a model that cannot stick; NaN outside the atlas's radii. */
+/* The sticking velocity; INFINITY where the grains stick at every speed of the atlas (v_stick
+ * above its top speed); 0 for a model that cannot stick; NaN outside the atlas's radii. */
 double bounce_atlas_v_stick(const bounce_atlas *atlas, double r1, double r2);
 
 typedef struct {

@@ -98,7 +98,7 @@ class Atlas:
         return self._core.sticks(radius1, radius2, velocity)
 
     def v_stick(self, radius1, radius2):
-        """The sticking velocity [m/s]; inf where the grains stick at every speed."""
+        """The sticking velocity [m/s]; inf where the grains stick at every speed of the atlas."""
         return self._core.v_stick(radius1, radius2)
 
     def contact_time(self, radius1, radius2, velocity):

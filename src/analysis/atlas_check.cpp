@@ -21,7 +21,7 @@ namespace {
 constexpr int z_points = 100, x_points = 150, y_points = 150, full_points = 600;
 constexpr int threshold_points = 12;
 constexpr int max_level_y = 4, max_level_z = 4;
-constexpr std::size_t max_x_nodes = 2048;
+constexpr std::size_t max_x_nodes = 8192;
 
 }  // namespace
 
@@ -153,9 +153,12 @@ bool AtlasBuild::refine(AtlasLevels& levels, const AtlasCheck& c) const {
   }
   if (stuck) {
     throw InvalidArgument("tol", fmt::format("{}", request_.tolerance),
-                          fmt::format("a tolerance the atlas reaches within its finest grid: there its largest eps "
-                                      "error is {:.3g} and v_s's {:.3g} (a larger --tol, or a smaller range)",
-                                      c.cor(), c.v_stick()));
+                          fmt::format("a tolerance the atlas reaches within its finest grid ({} x {} x {} nodes): its "
+                                      "checks still find eps errors of {:.3g} on the nodes, {:.3g} along x, {:.3g} "
+                                      "along y (each held to tol/4) and {:.3g} anywhere (tol/2), and v_s's {:.3g} "
+                                      "(5e-7) (a larger --tol, or a smaller range)",
+                                      levels.x.size(), base_.y_at(levels).count, base_.z_at(levels).count, c.z, c.x,
+                                      c.y, c.full, c.v_stick()));
   }
   return true;
 }

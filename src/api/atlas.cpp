@@ -81,8 +81,10 @@ Inputs with_materials(Inputs inputs) {
   return inputs;
 }
 
+// N: the first grid's nodes (radius) or the step it sets in z (velocity); at most 1024, beyond
+// which the refinement's finest grid would be too large to build.
 detail::Points atlas_range(const Parameters& own, const char* name, const char* unit) {
-  const std::string allowed = fmt::format("MIN:MAX:N with 0 < MIN < MAX in {} and 4 <= N <= 1e5", unit);
+  const std::string allowed = fmt::format("MIN:MAX:N with 0 < MIN < MAX in {} and 4 <= N <= 1024", unit);
   if (!own.given(name)) throw InvalidArgument(name, "(not given)", allowed);
   detail::Points p;
   try {
@@ -90,7 +92,7 @@ detail::Points atlas_range(const Parameters& own, const char* name, const char* 
   } catch (const InvalidArgument&) {
     throw InvalidArgument(name, own.text(name), allowed);
   }
-  if (!(p.lo > 0.0) || !(p.hi > p.lo) || p.n < 4 || p.n > 100000) throw InvalidArgument(name, own.text(name), allowed);
+  if (!(p.lo > 0.0) || !(p.hi > p.lo) || p.n < 4 || p.n > 1024) throw InvalidArgument(name, own.text(name), allowed);
   return p;
 }
 
