@@ -15,6 +15,16 @@ namespace bounce::python {
 namespace {
 
 using analysis::Atlas;
+using analysis::AtlasValue;
+
+// A vectorised lookup of one of the quantities a collision has only when it bounces (NaN when
+// the grains stick).
+template <class Get>
+auto field(Get get) {
+  return py::vectorize([get](const Atlas* a, double r1, double r2, double v) {
+    return get(a->at({r1, r2, v})).value_or(std::numeric_limits<double>::quiet_NaN());
+  });
+}
 
 analysis::Atlas open(const std::string& path, const std::optional<std::string>& model) {
   return analysis::read_atlas(path, model.value_or(""));
@@ -46,24 +56,12 @@ void bind_atlas(py::module_& m) {
            py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
       .def("v_stick", py::vectorize([](const Atlas* a, double r1, double r2) { return a->v_stick(r1, r2); }),
            py::arg("radius1"), py::arg("radius2"))
-      .def(
-          "contact_time",
-          py::vectorize([](const Atlas* a, double r1, double r2, double v) {
-            return a->at({r1, r2, v}).contact_time.value_or(std::numeric_limits<double>::quiet_NaN());
-          }),
-          py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
-      .def(
-          "bulk_fraction",
-          py::vectorize([](const Atlas* a, double r1, double r2, double v) {
-            return a->at({r1, r2, v}).bulk_fraction.value_or(std::numeric_limits<double>::quiet_NaN());
-          }),
-          py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
-      .def(
-          "crack_fraction",
-          py::vectorize([](const Atlas* a, double r1, double r2, double v) {
-            return a->at({r1, r2, v}).crack_fraction.value_or(std::numeric_limits<double>::quiet_NaN());
-          }),
-          py::arg("radius1"), py::arg("radius2"), py::arg("velocity"))
+      .def("contact_time", field([](const AtlasValue& v) { return v.contact_time; }), py::arg("radius1"),
+           py::arg("radius2"), py::arg("velocity"))
+      .def("bulk_fraction", field([](const AtlasValue& v) { return v.bulk_fraction; }), py::arg("radius1"),
+           py::arg("radius2"), py::arg("velocity"))
+      .def("crack_fraction", field([](const AtlasValue& v) { return v.crack_fraction; }), py::arg("radius1"),
+           py::arg("radius2"), py::arg("velocity"))
       .def("describe", [](const Atlas& a) { return to_python(api::atlas_record(a)); })
       .def_readonly("model", &Atlas::model)
       .def_readonly("radius_min", &Atlas::radius_min)

@@ -120,19 +120,24 @@ std::array<double, 2> AtlasBuild::node_radii(const AtlasAxis& x, const AtlasAxis
   return radii_for(std::exp(x.value(ix)), std::exp(y.value(iy)), m1_.density, m2_.density);
 }
 
-// The z points of a node: from threshold_margin v_s above its sticking velocity to v_max, never
-// above the sound speed.
-std::vector<double> AtlasBuild::column_speeds(const AtlasThreshold& t, const AtlasAxis& z) const {
-  std::vector<double> speeds;
-  if (!t.defined || t.velocity > column_cap * request_.velocity_max) return speeds;
+// The z points of a node, (index, speed): from threshold_margin v_s above its sticking velocity
+// to v_max, never above the sound speed; none where v_s lies above column_cap v_max.
+std::vector<std::pair<std::size_t, double>> AtlasBuild::column_speeds(const AtlasThreshold& t,
+                                                                      const AtlasAxis& z) const {
+  std::vector<std::pair<std::size_t, double>> speeds;
+  if (!has_column(t)) return speeds;
   for (std::size_t k = 0; k < z.count; ++k) {
     const double gap = std::exp(z.value(k));
     if (can_stick_ && gap < threshold_margin(request_.tolerance) * t.velocity) continue;
     const double v = t.velocity + gap;
     if (v > c_t_) break;
-    speeds.push_back(v);
+    speeds.emplace_back(k, v);
   }
   return speeds;
+}
+
+bool AtlasBuild::has_column(const AtlasThreshold& t) const {
+  return t.defined && t.velocity <= column_cap * request_.velocity_max;
 }
 
 void AtlasBuild::compute_nodes(const AtlasLevels& levels) {
@@ -143,7 +148,7 @@ void AtlasBuild::compute_nodes(const AtlasLevels& levels) {
   const AtlasAxis z = base_.z_at(levels);
   run_jobs(n, [&](std::size_t i) {
     const auto radii = node_radii(x, y, i / y.count, i % y.count);
-    for (double v : column_speeds(threshold(radii), z)) collision(radii, v);
+    for (const auto& [k, v] : column_speeds(threshold(radii), z)) collision(radii, v);
   });
 }
 

@@ -62,7 +62,8 @@ class AtlasBuild {
   void report(const char* stage);
   void run_jobs(std::size_t count, const std::function<void(std::size_t)>& job);
   std::array<double, 2> node_radii(const AtlasAxis& x, const AtlasAxis& y, std::size_t ix, std::size_t iy) const;
-  std::vector<double> column_speeds(const AtlasThreshold& t, const AtlasAxis& z) const;
+  std::vector<std::pair<std::size_t, double>> column_speeds(const AtlasThreshold& t, const AtlasAxis& z) const;
+  bool has_column(const AtlasThreshold& t) const;
   void compute_nodes(const AtlasLevels& levels);
   void fix_z_axis(const AtlasAxis& x, const AtlasAxis& y);
   void initial_grid();

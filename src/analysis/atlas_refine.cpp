@@ -39,15 +39,12 @@ void AtlasBuild::fill_column(Atlas& a, std::size_t ix, std::size_t iy) {
   const std::size_t node = ix * a.y.count + iy, nz = a.z.count;
   a.stick_ratio[node] = t.defined && can_stick_ ? a.reference_velocity(a.x.value(ix), a.y.value(iy)) / t.velocity : 0.0;
   known_ratio_[node] = t.defined;
-  a.defined[node] = t.defined && t.velocity <= column_cap * request_.velocity_max ? 1 : 0;
+  a.defined[node] = has_column(t) ? 1 : 0;
   if (a.defined[node] == 0) return;
   std::optional<std::array<double, atlas_field_count>> first, last;
   std::vector<std::optional<std::array<double, atlas_field_count>>> column(nz);
-  for (std::size_t k = 0; k < nz; ++k) {
-    const double gap = std::exp(a.z.value(k));
-    if (can_stick_ && gap < threshold_margin(request_.tolerance) * t.velocity) continue;
-    const double v = t.velocity + gap;
-    if (v > c_t_) break;
+  for (const auto& [k, v] : column_speeds(t, a.z)) {
+    const double gap = std::exp(a.z.value(k));  // as column_speeds added it to v_s
     const AtlasCollision c = collision(radii, v);
     if (c.sticks) {
       throw InvalidArgument("model", request_.model,
