@@ -28,10 +28,10 @@ bool in_pair(const std::string& name) {
 
 // Option groups of --help: the two bodies, the model (or law), the command's own.
 const char* group_of(const api::CommandSpec& command, const std::string& name) {
-  if (command.takes_pair && in_pair(name)) return "Bodies";
-  for (const ParameterSpec& s : command.parameters) {
+  for (const ParameterSpec& s : command.parameters) {  // the command's own first (atlas build's --radius)
     if (s.name == name) return "Options";
   }
+  if (command.takes_pair && in_pair(name)) return "Bodies";
   return command.takes_model ? "Model" : "Law";
 }
 

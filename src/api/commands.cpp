@@ -144,7 +144,12 @@ std::vector<ParameterSpec> offered_parameters(std::string_view name) {
     extra.push_back(law_parameter());
     for (const auto& row : contact::contact_laws()) extra.insert(extra.end(), row.parameters.begin(), row.parameters.end());
   }
-  const std::span<const ParameterSpec> pair = c.takes_pair ? pair_parameters() : std::span<const ParameterSpec>{};
+  std::vector<ParameterSpec> pair;  // the pair's, but those the command never uses
+  if (c.takes_pair) {
+    for (const ParameterSpec& s : pair_parameters()) {
+      if (!unused_by(c, s.name)) pair.push_back(s);
+    }
+  }
   return merge_specs({c.parameters, pair, extra});
 }
 
