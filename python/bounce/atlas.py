@@ -117,7 +117,8 @@ class Atlas:
                 max_outside: float = 1e-6, nodes: int = 64):
         """The probability that the pair sticks when its relative speed is drawn from
         `distribution` with scale sigma_v [m/s]: "maxwell" (maxwell_cdf), or a callable
-        pdf(v, sigma_v) integrated over [0, v_stick] (Gauss-Legendre, `nodes` points).
+        pdf(v, sigma_v), normalised, integrated over [0, v_stick] (Gauss-Legendre with `nodes`
+        points on pieces growing geometrically from 1e-3 sigma_v).
 
         The atlas knows the outcome only inside its speeds (and below them where v_stick is
         above its lowest speed): where more than `max_outside` of the distribution lies
@@ -130,7 +131,7 @@ class Atlas:
             raise ValueError(f"nodes = {nodes!r} is invalid: expected an integer 4 <= nodes <= 1024")
         vs = np.asarray(self.v_stick(radius1, radius2), dtype=float)
         lo, hi = self.velocity_range
-        if distribution == "maxwell":
+        if isinstance(distribution, str) and distribution == "maxwell":
             cdf = maxwell_cdf
         elif callable(distribution):
             cdf = _cdf_of(distribution, nodes)
