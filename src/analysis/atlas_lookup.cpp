@@ -174,6 +174,11 @@ void Atlas::prepare_x(const std::function<void(const std::string&)>& bad) {
   return sum;
 }
 
+// eps at `velocity`, `gap` = velocity - v_s above the sticking velocity (gap > 0).
+[[gnu::always_inline]] inline double Atlas::cor_above(const Stencil& s, double gap, double velocity) const noexcept {
+  return std::clamp(field_at(s, AtlasField::cor_factor, std::log(gap)) * std::sqrt(gap / velocity), 0.0, 1.0);
+}
+
 // ln R_eff, or NaN for radii that are not > 0 or whose R_eff lies outside the atlas; and ln rho_eff
 // held inside the y axis (which spans every pair of the materials: only round-off is clamped).
 Atlas::Point Atlas::point(double radius1, double radius2) const noexcept {
@@ -232,7 +237,7 @@ AtlasValue Atlas::evaluate(double radius1, double radius2, double velocity, bool
     return out;
   }
   const double gap = velocity - v_s, zq = std::log(gap);
-  out.cor = std::clamp(field_at(s, AtlasField::cor_factor, zq) * std::sqrt(gap / velocity), 0.0, 1.0);
+  out.cor = cor_above(s, gap, velocity);
   if (fields) {
     out.contact_time = std::exp(field_at(s, AtlasField::ln_contact_time, zq));
     out.bulk_fraction = std::clamp(field_at(s, AtlasField::bulk_fraction, zq), 0.0, 1.0);
@@ -273,9 +278,12 @@ int Atlas::sticks_unchecked(double radius1, double radius2, double velocity) con
 }
 
 double Atlas::cor_unchecked(double radius1, double radius2, double velocity) const noexcept {
-  double out = 0.0;
-  cor_many(1, &radius1, &radius2, &velocity, &out);
-  return out;
+  const Point p = point(radius1, radius2);
+  if (std::isnan(p.ln_r) || !speed_inside(velocity)) return std::numeric_limits<double>::quiet_NaN();
+  Stencil s;
+  locate(p.ln_r, p.ln_rho, s);
+  const double gap = velocity - v_stick_at(s, p.ln_r, p.ln_rho);
+  return gap > 0.0 ? cor_above(s, gap, velocity) : 0.0;
 }
 
 void Atlas::cor_many(std::size_t n, const double* radius1, const double* radius2, const double* velocity,
@@ -298,9 +306,7 @@ void Atlas::cor_many(std::size_t n, const double* radius1, const double* radius2
     }
     for (std::size_t i = 0; i < m; ++i) {  // eps above v_s
       const double g = gap[i];
-      out[first + i] = g > 0.0 ? std::clamp(field_at(s[i], AtlasField::cor_factor, std::log(g)) * std::sqrt(g / speed[i]),
-                                            0.0, 1.0)
-                               : g;  // 0 (sticks) or NaN (outside)
+      out[first + i] = g > 0.0 ? cor_above(s[i], g, speed[i]) : g;  // 0 (sticks) or NaN (outside)
     }
   }
 }

@@ -158,6 +158,7 @@ class Atlas {
   void locate(double ln_r, double ln_rho, Stencil& s) const noexcept;
   double v_stick_at(const Stencil& s, double ln_r, double ln_rho) const noexcept;
   double field_at(const Stencil& s, AtlasField f, double zq) const noexcept;
+  double cor_above(const Stencil& s, double gap, double velocity) const noexcept;
   AtlasValue evaluate(double radius1, double radius2, double velocity, bool fields) const;
 };
 
