@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <sstream>
 #include <utility>
 
@@ -38,6 +39,27 @@ std::string given(const Coeffs& c, const std::string& key) {
   return it == c.end() ? "(not given)" : it->second;
 }
 
+// Two values as typed are the same where their text is, or where both read whole as the same
+// number (`tvis 1e-11` and `tvis 1.0e-11`).
+bool same(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  double x = 0.0, y = 0.0;
+  const auto rx = std::from_chars(a.data(), a.data() + a.size(), x);
+  const auto ry = std::from_chars(b.data(), b.data() + b.size(), y);
+  return rx.ec == std::errc() && ry.ec == std::errc() && rx.ptr == a.data() + a.size() &&
+         ry.ptr == b.data() + b.size() && x == y;
+}
+
+// The first key whose values differ between the two, the model's first ("" where none does).
+std::string first_difference(const Coeffs& a, const Coeffs& b) {
+  if (!same(given(a, "model"), given(b, "model"))) return "model";
+  for (const auto& [k, v] : a)
+    if (!same(given(b, k), v)) return k;
+  for (const auto& [k, v] : b)
+    if (!same(given(a, k), v)) return k;
+  return "";
+}
+
 }  // namespace
 
 std::shared_ptr<const TypeLaw> make_type_law(const Coeffs& coeffs) {
@@ -54,13 +76,7 @@ std::shared_ptr<const TypeLaw> make_type_law(const Coeffs& coeffs) {
 
 std::shared_ptr<const TypeLaw> mix(const TypeLaw& ii, const TypeLaw& jj, int i, int j) {
   const Coeffs a = model_keys(ii.coeffs), b = model_keys(jj.coeffs);
-  if (a != b) {
-    // The first key in which they differ, the model's first.
-    std::string key = given(a, "model") != given(b, "model") ? "model" : "";
-    for (const auto& [k, v] : a)
-      if (given(b, k) != v && key.empty()) key = k;
-    for (const auto& [k, v] : b)
-      if (given(a, k) != v && key.empty()) key = k;
+  if (const std::string key = first_difference(a, b); !key.empty()) {
     throw CannotMix(fmt::format(
         "types {} and {} cannot be mixed: {} = {} for {} {} but {} for {} {} (bounce mixes two types' materials, "
         "not their models' parameters): give pair_coeff {} {}",

@@ -137,6 +137,18 @@ def test_types_that_cannot_mix_are_refused_with_the_reason(coeffs, expected):
     assert code != 0 and errors and expected in errors[0] and "pair_coeff 1 2" in errors[0], output[-2000:]
 
 
+def test_types_mix_by_value_not_by_text():
+    """tvis 1e-11 for 1 1 and 1.0e-11 for 2 2 are the same number: the types mix (they were refused
+    as differing while the keys were compared as text), and the mixed collision is the one of
+    pair_coeff 1 2 given."""
+    one = "pair_coeff 1 1 jkr-viscoelastic material water-ice tvis 1e-11"
+    mixed = one + "\npair_coeff 2 2 jkr-viscoelastic material water-ice tvis 1.0e-11"
+    pair, model = dict(material="water-ice", radius=1e-6), dict(model="jkr-viscoelastic", tvis=1e-11)
+    eps_mixed, _, _ = L.head_on(pair, model, 5.0, coeff_lines=mixed)
+    eps_given, _, _ = L.head_on(pair, model, 5.0)
+    assert eps_mixed == eps_given, (eps_mixed, eps_given)
+
+
 # Rows 6 and 7: the explicit step's check from the contact's stiffness and damping.
 @pytest.mark.parametrize("steps", [200, 1000])
 def test_resolved_collisions_print_no_warning(steps):
