@@ -1,5 +1,5 @@
 /* fix wall/bounce (docs/lammps.md, Walls): the atom is body 1, the flat wall body 2 (R_eff = R,
-   m_eff = m); each contact's step is bounce::lammps::contact_step, as pair_style bounce's. */
+   m_eff = m); each contact's step is bounce::dem::step, as pair_style bounce's. */
 
 #include "fix_wall_bounce.h"
 
@@ -19,8 +19,7 @@
 #include "utils.h"
 
 #include "bounce/api/front_door.hpp"
-#include "bounce/models/contact_law.hpp"
-#include "contact_step.h"
+#include "bounce/dem/contact.hpp"
 #include "rigid_masses.h"
 #include "stop.h"
 
@@ -73,6 +72,9 @@ FixWallBounce::FixWallBounce(LAMMPS *instance, int narg, char **arg) : Fix(insta
     error->all(FLERR, "fix wall/bounce {}: {}", arg[6], e.what());
   }
 
+  layout_.add(*law_);
+  values_ = 1 + layout_.size();
+  size_ = 2 * values_;
   restart_peratom = 1;
   FixWallBounce::grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -125,26 +127,9 @@ void FixWallBounce::setup(int vflag)
   post_force(vflag);
 }
 
-// The contact of atom i with a wall whose normal (into the box) is `sign` along the axis.
-bounce::lammps::Kinematics FixWallBounce::kinematics(int i, double sign, double overlap) const
-{
-  const double *v = atom->v[i], *o = atom->omega[i], r = atom->radius[i];
-  bounce::lammps::Kinematics k;
-  k.n[0] = k.n[1] = k.n[2] = 0.0;
-  k.n[axis_] = sign;
-  k.overlap = overlap;
-  k.vn = sign * v[axis_];
-  // The contact point's velocity in the tangent plane: v + omega x (-R n).
-  const double spin[3] = {-r * (o[1] * k.n[2] - o[2] * k.n[1]), -r * (o[2] * k.n[0] - o[0] * k.n[2]),
-                          -r * (o[0] * k.n[1] - o[1] * k.n[0])};
-  for (int d = 0; d < 3; d++) k.sliding[d] = v[d] + spin[d];
-  k.sliding[axis_] = 0.0;
-  return k;
-}
-
 // A contact whose step is a tenth of the explicit step's limit or more: a WARNING once per run
 // and rank; at the limit (unstable) LAMMPS stops (step_check.h).
-void FixWallBounce::report(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int i, double dt)
+void FixWallBounce::report(const bounce::dem::ContactForce &c, const bounce::dem::Kinematics &k, int i, double dt)
 {
   if (c.check.stability >= 1.0)
     bounce::lammps::stop_one(
@@ -161,7 +146,7 @@ void FixWallBounce::report(const bounce::lammps::ContactForce &c, const bounce::
                  atom->tag[i], k.overlap, c.check.describe(dt));
 }
 
-void FixWallBounce::not_finite(int i, const bounce::lammps::Kinematics &k, double dt)
+void FixWallBounce::not_finite(int i, const bounce::dem::Kinematics &k, double dt)
 {
   bounce::lammps::stop_one(
       lmp, fmt::format("fix wall/bounce: the force on atom {} is not finite (overlap {:.6g} m, rate {:.6g} m/s, dt "
@@ -172,7 +157,7 @@ void FixWallBounce::not_finite(int i, const bounce::lammps::Kinematics &k, doubl
 
 void FixWallBounce::post_force(int)
 {
-  bounce::lammps::StepSettings settings;
+  bounce::dem::StepSettings settings;
   settings.dt = update->dt;
   settings.update_history = !update->setupflag;
   settings.corrected = corrected_ && settings.update_history;
@@ -188,33 +173,33 @@ void FixWallBounce::post_force(int)
     if (!(mask[i] & groupbit)) continue;
     for (int w = 0; w < 2; w++) {
       if (!has_[w]) continue;
-      double *slot = &state_[i][w * values];
+      double *slot = &state_[i][w * values_];
       const double sign = w == 0 ? 1.0 : -1.0;  // n points from the wall into the box
       const double distance = sign * (x[i][axis_] - position_[w]);
       const double overlap = radius[i] - distance;
-      int touch = static_cast<int>(slot[0]);
+      const bool touch = slot[0] != 0.0;
       if (distance <= 0.0) {  // the centre is behind the wall: no contact (as fix wall/gran)
-        for (int m = 0; m < values; m++) slot[m] = 0.0;
+        for (int m = 0; m < values_; m++) slot[m] = 0.0;
         continue;
       }
       if (!touch && overlap <= 0.0 && !snaps) continue;
       bounce::models::ContactGeometry g;
       g.effective_radius = radius[i];  // a flat wall
       g.effective_mass = mass(i);      // an immovable one
-      if (!touch && snaps && overlap <= law.snap_overlap(g)) continue;  // out of the zone's reach
-      const bounce::lammps::Kinematics k = kinematics(i, sign, overlap);
-      const double release = overlap > 0.0 ? 0.0 : law.normal->release_overlap(g);
-      const bounce::lammps::ContactForce c =
-          bounce::lammps::contact_step(law, g, k, release, settings, touch, slot + 1);
-      slot[0] = touch;
+      if (!touch && snaps && !bounce::dem::within_reach(law, g, overlap)) continue;  // out of the zone's reach
+      const bounce::dem::Kinematics k =
+          bounce::dem::wall_kinematics({x[i], atom->v[i], atom->omega[i], radius[i]}, axis_, sign, overlap);
+      bounce::dem::ContactState state = layout_.read(touch, slot + 1);
+      const bounce::dem::ContactForce c = bounce::dem::step(law, g, k, settings, state);
+      slot[0] = state.touching ? 1.0 : 0.0;
+      layout_.write(state, slot + 1);
       if (!c.finite()) not_finite(i, k, settings.dt);
-      if (c.check.stability > bounce::lammps::coarse_stability) report(c, k, i, settings.dt);
-      for (int d = 0; d < 3; d++) f[i][d] += k.n[d] * c.normal + c.tangential[d];
-      // Torque (-R n) x F^T, with lever arm R (as pair_style bounce).
-      const double *ft = c.tangential;
-      torque[i][0] -= radius[i] * (k.n[1] * ft[2] - k.n[2] * ft[1]);
-      torque[i][1] -= radius[i] * (k.n[2] * ft[0] - k.n[0] * ft[2]);
-      torque[i][2] -= radius[i] * (k.n[0] * ft[1] - k.n[1] * ft[0]);
+      if (c.check.stability > bounce::dem::coarse_stability) report(c, k, i, settings.dt);
+      const bounce::dem::Loads l = bounce::dem::loads(c, k, radius[i], radius[i]);
+      for (int d = 0; d < 3; d++) {
+        f[i][d] += l.force[d];
+        torque[i][d] += l.torque1[d];
+      }
     }
   }
 }

@@ -18,11 +18,7 @@ FixStyle(wall/bounce,FixWallBounce);
 #include <memory>
 
 #include "fix.h"
-#include "contact_step.h"
-
-namespace bounce::models {
-struct DemModel;
-}
+#include "bounce/dem/contact.hpp"
 
 namespace LAMMPS_NS {
 
@@ -47,13 +43,13 @@ class FixWallBounce : public Fix {
   int maxsize_restart() override;
 
  private:
-  bounce::lammps::Kinematics kinematics(int i, double sign, double overlap) const;
-  void report(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int i, double dt);
+    void report(const bounce::dem::ContactForce &c, const bounce::dem::Kinematics &k, int i, double dt);
   void update_rigid_masses();
-  [[noreturn]] void not_finite(int i, const bounce::lammps::Kinematics &k, double dt);
+  [[noreturn]] void not_finite(int i, const bounce::dem::Kinematics &k, double dt);
   double mass(int i) const;
-  static constexpr int values = 1 + bounce::lammps::history_size;  // per atom and wall: the touch flag, the history (no crack laws at walls)
-  static constexpr int size_ = 2 * values;  // per atom: two walls
+  bounce::dem::Layout layout_;  // the contact's state in the history
+  int values_ = 0;              // per atom and wall: the touch flag, the history
+  int size_ = 0;                // per atom: two walls
   int axis_;
   bool has_[2];
   double position_[2];

@@ -27,7 +27,7 @@
 #include "utils.h"
 
 #include "bounce/models/contact_law.hpp"
-#include "contact_step.h"
+#include "bounce/dem/contact.hpp"
 #include "stop.h"
 #include "type_laws.h"
 
@@ -118,16 +118,14 @@ void PairBounce::settings(int narg, char **arg)
              arg[0]);
 }
 
-// The history is that of pair (i, j); seen from j it is (j, i): the spring turns round, the
-// normal force and the crack's state do not.
+// The history is that of pair (i, j); seen from j it is (j, i) (dem::Layout::reverse).
 #if BOUNCE_LAMMPS_TYPED_TRANSFER
 void PairBounce::transfer_history(double *source, double *target, int, int)
 #else
 void PairBounce::transfer_history(double *source, double *target)
 #endif
 {
-  for (int k = 0; k < bounce::lammps::last_force; k++) target[k] = -source[k];
-  for (int k = bounce::lammps::last_force; k < history_values_; k++) target[k] = source[k];
+  layout_.reverse(source, target);
 }
 
 // pair_coeff I J MODEL key value ...: the CLI's names without dashes (docs/lammps.md).
@@ -198,7 +196,7 @@ double PairBounce::effective_mass(int i, int j) const
 
 // A contact whose step is a tenth of the explicit step's limit or more: a WARNING once per run
 // and rank; at the limit (unstable) LAMMPS stops.
-void PairBounce::report(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int i, int j)
+void PairBounce::report(const bounce::dem::ContactForce &c, const bounce::dem::Kinematics &k, int i, int j)
 {
   const double dt = update->dt;
   if (c.check.stability >= 1.0)
@@ -215,32 +213,10 @@ void PairBounce::report(const bounce::lammps::ContactForce &c, const bounce::lam
                  atom->tag[i], atom->tag[j], k.overlap, c.check.describe(dt));
 }
 
-namespace {
-
-// The contact's geometry and motion, as pair granular takes them: n from j to i, the overlap, the
-// normal rate and the contact points' relative velocity in the tangent plane.
-bounce::lammps::Kinematics kinematics(const double *xi, const double *xj, const double *vi, const double *vj,
-                                      const double *wi, const double *wj, double ri, double rj, double r)
-{
-  bounce::lammps::Kinematics k;
-  const double rinv = 1.0 / r;
-  for (int d = 0; d < 3; d++) k.n[d] = (xi[d] - xj[d]) * rinv;
-  k.overlap = ri + rj - r;
-  const double vr[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
-  k.vn = vr[0] * k.n[0] + vr[1] * k.n[1] + vr[2] * k.n[2];
-  const double wr[3] = {ri * wi[0] + rj * wj[0], ri * wi[1] + rj * wj[1], ri * wi[2] + rj * wj[2]};
-  k.sliding[0] = vr[0] - k.vn * k.n[0] - (k.n[2] * wr[1] - k.n[1] * wr[2]);
-  k.sliding[1] = vr[1] - k.vn * k.n[1] - (k.n[0] * wr[2] - k.n[2] * wr[0]);
-  k.sliding[2] = vr[2] - k.vn * k.n[2] - (k.n[1] * wr[0] - k.n[0] * wr[1]);
-  return k;
-}
-
-}  // namespace
-
 // The step of the contact of atoms i and j (touch and history: its neighbor-list entry's), by
-// bounce::lammps::contact_step. False where there is none (nothing to apply).
-bool PairBounce::contact(int i, int j, int &touch, double *history, const bounce::lammps::StepSettings &s,
-                         bounce::lammps::ContactForce &c, bounce::lammps::Kinematics &k)
+// bounce::dem::step on the history's state. False where there is none (nothing to apply).
+bool PairBounce::contact(int i, int j, int &touch, double *history, const bounce::dem::StepSettings &s,
+                         bounce::dem::ContactForce &c, bounce::dem::Kinematics &k)
 {
   double **x = atom->x;
   const double *radius = atom->radius;
@@ -255,14 +231,16 @@ bool PairBounce::contact(int i, int j, int &touch, double *history, const bounce
   const bounce::models::DemModel &law = type_law.law;
   const bounce::models::ContactGeometry g{radius[i] * radius[j] / radsum, effective_mass(i, j)};
   const double r = std::sqrt(rsq);
-  if (!touch && type_law.snaps && radsum - r <= law.snap_overlap(g)) return false;
+  if (!touch && type_law.snaps && !bounce::dem::within_reach(law, g, radsum - r)) return false;
   if (rsq == 0.0)
     stop_one(fmt::format("pair_style bounce: atoms {} and {} are at the same place (no contact normal)", atom->tag[i],
                          atom->tag[j]));
   double **v = atom->v, **omega = atom->omega;
-  k = kinematics(x[i], x[j], v[i], v[j], omega[i], omega[j], radius[i], radius[j], r);
-  const double release = k.overlap > 0.0 || law.crack ? 0.0 : law.normal->release_overlap(g);
-  c = bounce::lammps::contact_step(law, g, k, release, s, touch, history);
+  k = bounce::dem::pair_kinematics({x[i], v[i], omega[i], radius[i]}, {x[j], v[j], omega[j], radius[j]}, r);
+  bounce::dem::ContactState state = layout_.read(touch != 0, history);
+  c = bounce::dem::step(law, g, k, s, state);
+  touch = state.touching;
+  layout_.write(state, history);
   if (!c.finite())
     stop_one(fmt::format("pair_style bounce: the force between atoms {} and {} is not finite (overlap {:.6g} m, rate "
                          "{:.6g} m/s, dt {:.6g} s): the time step is too large for this law, or an input extreme "
@@ -271,28 +249,29 @@ bool PairBounce::contact(int i, int j, int &touch, double *history, const bounce
   return true;
 }
 
-// The loop of pair granular; each contact's step is bounce::lammps::contact_step (the
-// corrected or plain integration, docs/lammps.md).
+// The loop of pair granular; each contact's step is bounce::dem::step (the corrected or plain
+// integration, docs/lammps.md).
 void PairBounce::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (eflag) pvector[2] = pvector[3] = 0.0;  // the stored energies; 0 and 1 accumulate over the run
   if (fix_rigid_ && neighbor->ago == 0) update_rigid_masses();
-  bounce::lammps::StepSettings settings;
+  bounce::dem::StepSettings settings;
   settings.dt = update->dt;
   settings.update_history = !update->setupflag;
   settings.corrected = corrected_ && settings.update_history;  // setup: whole-step velocities
   int **firsttouch = fix_history_->firstflag;
   double **firsthistory = fix_history_->firstvalue;
-  bounce::lammps::ContactForce c;
-  bounce::lammps::Kinematics k;
+  bounce::dem::ContactForce c;
+  bounce::dem::Kinematics k;
+  const int values = layout_.size();
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      if (!contact(i, j, firsttouch[i][jj], &firsthistory[i][history_values_ * jj], settings, c, k)) continue;
-      if (c.check.stability > bounce::lammps::coarse_stability) report(c, k, i, j);
+      if (!contact(i, j, firsttouch[i][jj], &firsthistory[i][values * jj], settings, c, k)) continue;
+      if (c.check.stability > bounce::dem::coarse_stability) report(c, k, i, j);
       apply(i, j, c, k, eflag);
     }
   }
@@ -300,28 +279,21 @@ void PairBounce::compute(int eflag, int vflag)
 
 // A contact's force and torque on atoms i and j (j only when it is owned or newton pair is on),
 // its energies and its virial.
-void PairBounce::apply(int i, int j, const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k,
-                       int eflag)
+void PairBounce::apply(int i, int j, const bounce::dem::ContactForce &c, const bounce::dem::Kinematics &k, int eflag)
 {
   double **f = atom->f, **torque = atom->torque;
   const double *radius = atom->radius;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-  const double *ft = c.tangential;
-  const double fx = k.n[0] * c.normal + ft[0], fy = k.n[1] * c.normal + ft[1], fz = k.n[2] * c.normal + ft[2];
-  f[i][0] += fx;
-  f[i][1] += fy;
-  f[i][2] += fz;
-  // The lever arm is the radius, as in BSHP96's (10) and in the contact points' velocity
-  // (pair granular's R - xi/2 here would make the tangential force's power differ from
-  // -F^T . sliding by O(xi/R), and eps^T by ~1e-3 from bounce's).
-  const double tor[3] = {k.n[1] * ft[2] - k.n[2] * ft[1], k.n[2] * ft[0] - k.n[0] * ft[2],
-                         k.n[0] * ft[1] - k.n[1] * ft[0]};
-  for (int d = 0; d < 3; d++) torque[i][d] -= radius[i] * tor[d];
+  const bounce::dem::Loads l = bounce::dem::loads(c, k, radius[i], radius[j]);
+  for (int d = 0; d < 3; d++) {
+    f[i][d] += l.force[d];
+    torque[i][d] += l.torque1[d];
+  }
   if (newton_pair || j < nlocal) {
-    f[j][0] -= fx;
-    f[j][1] -= fy;
-    f[j][2] -= fz;
-    for (int d = 0; d < 3; d++) torque[j][d] -= radius[j] * tor[d];
+    for (int d = 0; d < 3; d++) {
+      f[j][d] -= l.force[d];
+      torque[j][d] += l.torque2[d];
+    }
   }
   // A crack law's energies (krijt): the pair is computed twice, once on each side, when j is a
   // ghost atom and newton pair is off.
@@ -334,7 +306,7 @@ void PairBounce::apply(int i, int j, const bounce::lammps::ContactForce &c, cons
   }
   if (evflag) {
     double **x = atom->x;
-    ev_tally_xyz(i, j, nlocal, newton_pair, c.elastic + c.surface, 0.0, fx, fy, fz, x[i][0] - x[j][0],
-                 x[i][1] - x[j][1], x[i][2] - x[j][2]);
+    ev_tally_xyz(i, j, nlocal, newton_pair, c.elastic + c.surface, 0.0, l.force[0], l.force[1], l.force[2],
+                 x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]);
   }
 }

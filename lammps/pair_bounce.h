@@ -21,10 +21,9 @@ PairStyle(bounce,PairBounce);
 #include "lmptype.h"
 #include "pair.h"
 
+#include "bounce/dem/contact.hpp"
+
 namespace bounce::lammps {
-struct ContactForce;
-struct Kinematics;
-struct StepSettings;
 struct TypeLaw;
 }  // namespace bounce::lammps
 
@@ -65,10 +64,10 @@ class PairBounce : public Pair {
   void find_rigid_and_frozen();
   void update_rigid_masses();
   double effective_mass(int i, int j) const;
-  void report(const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int i, int j);
-  bool contact(int i, int j, int &touch, double *history, const bounce::lammps::StepSettings &s,
-               bounce::lammps::ContactForce &c, bounce::lammps::Kinematics &k);
-  void apply(int i, int j, const bounce::lammps::ContactForce &c, const bounce::lammps::Kinematics &k, int eflag);
+  void report(const bounce::dem::ContactForce &c, const bounce::dem::Kinematics &k, int i, int j);
+  bool contact(int i, int j, int &touch, double *history, const bounce::dem::StepSettings &s,
+               bounce::dem::ContactForce &c, bounce::dem::Kinematics &k);
+  void apply(int i, int j, const bounce::dem::ContactForce &c, const bounce::dem::Kinematics &k, int eflag);
   [[noreturn]] void stop_one(const std::string &message);
 
   std::vector<std::shared_ptr<const bounce::lammps::TypeLaw>> laws_;  // [itype * (ntypes + 1) + jtype]
@@ -80,7 +79,7 @@ class PairBounce : public Pair {
   int freeze_bit_ = 0;              // fix freeze's group: m_eff is the other atom's mass
   bool corrected_ = true;           // pair_style bounce integration corrected | plain
   bool warned_ = false;             // a contact too coarse for dt was reported in this run
-  int history_values_ = 0;          // per contact: history_size, or crack_history_size with krijt
+  bounce::dem::Layout layout_;      // per contact in FixNeighHistory: the laws' states (set at the first run)
   int single_neighbor_ = 0;         // single(): where the last search of j in i's list ended
 };
 

@@ -20,7 +20,7 @@
 #include "update.h"
 #include "utils.h"
 
-#include "contact_step.h"
+#include "bounce/dem/contact.hpp"
 #include "rigid_masses.h"
 #include "type_laws.h"
 
@@ -110,28 +110,28 @@ double PairBounce::single(int i, int j, int, int, double, double, double factor_
   // The contact's history, a copy: from i's list, or turned round from j's (a half list has the
   // pair once).
   int touch = 0;
-  double history[bounce::lammps::crack_history_size] = {};
+  double history[bounce::dem::Layout::largest] = {};
   if (fix_history_ && fix_history_->firstvalue && list) {
     int from = single_neighbor_;
     if (const int n = find_neighbor(list, i, j, from); n >= 0) {
       touch = fix_history_->firstflag[i][n];
-      std::copy_n(&fix_history_->firstvalue[i][history_values_ * n], history_values_, history);
+      std::copy_n(&fix_history_->firstvalue[i][layout_.size() * n], layout_.size(), history);
     } else if (j < atom->nlocal) {
       from = 0;
       if (const int m = find_neighbor(list, j, i, from); m >= 0) {
         touch = fix_history_->firstflag[j][m];
 #if BOUNCE_LAMMPS_TYPED_TRANSFER
-        transfer_history(&fix_history_->firstvalue[j][history_values_ * m], history, 0, 0);
+        transfer_history(&fix_history_->firstvalue[j][layout_.size() * m], history, 0, 0);
 #else
-        transfer_history(&fix_history_->firstvalue[j][history_values_ * m], history);
+        transfer_history(&fix_history_->firstvalue[j][layout_.size() * m], history);
 #endif
       }
     }
     single_neighbor_ = from;
   }
-  bounce::lammps::StepSettings s{update->dt, false, corrected_};
-  bounce::lammps::ContactForce c;
-  bounce::lammps::Kinematics k;
+  bounce::dem::StepSettings s{update->dt, false, corrected_};
+  bounce::dem::ContactForce c;
+  bounce::dem::Kinematics k;
   if (!contact(i, j, touch, history, s, c, k)) return 0.0;
   fforce = c.normal / (atom->radius[i] + atom->radius[j] - k.overlap);
   for (int d = 0; d < 3; d++) svector[d] = c.tangential[d];

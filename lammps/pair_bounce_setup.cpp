@@ -23,7 +23,7 @@
 #include "neigh_request.h"
 #endif
 
-#include "contact_step.h"
+#include "bounce/dem/state.hpp"
 #include "type_laws.h"
 
 using namespace LAMMPS_NS;
@@ -47,7 +47,7 @@ void PairBounce::init_style()
   warned_ = false;
 
   // A size neighbor list with history: the touch flag keeps adhesive contacts beyond
-  // r = R_i + R_j; the values are the contact's (contact_step.h).
+  // r = R_i + R_j; the values are the contact's state (bounce::dem::Layout).
 #if BOUNCE_LAMMPS_ADD_REQUEST
   neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
 #else
@@ -55,19 +55,19 @@ void PairBounce::init_style()
   neighbor->requests[irequest]->size = 1;
   neighbor->requests[irequest]->history = 1;
 #endif
+  // Each contact keeps the states of the sub-models its laws use (the fix's size is set once, at
+  // the first run).
+  bounce::dem::Layout layout;
+  for (const auto &law : laws_)
+    if (law) layout.add(law->law);
   if (fix_history_ == nullptr) {
-    // A crack law's contacts keep its state too (the fix's size is set once, at the first run).
-    history_values_ = bounce::lammps::history_size;
-    for (const auto &law : laws_)
-      if (law && law->law.crack) history_values_ = bounce::lammps::crack_history_size;
+    layout_ = layout;
     fix_history_ = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
-        dummy_id, std::string(history_id) + " all NEIGH_HISTORY " + std::to_string(history_values_), 1));
+        dummy_id, std::string(history_id) + " all NEIGH_HISTORY " + std::to_string(layout_.size()), 1));
     fix_history_->pair = this;
-  } else {
-    for (const auto &law : laws_)
-      if (law && law->law.crack && history_values_ < bounce::lammps::crack_history_size)
-        error->all(FLERR, "pair_style bounce: a krijt pair_coeff after the first run keeps no crack state: give it "
-                          "before the first run");
+  } else if (layout.size() > layout_.size()) {
+    error->all(FLERR, "pair_style bounce: a pair_coeff after the first run needs a state its contacts do not keep "
+                      "(krijt's crack): give it before the first run");
   }
   find_rigid_and_frozen();
   find_radii();
