@@ -217,9 +217,9 @@ std::string NormalTable::to_c_header(const std::string& prefix) const {
       prefix, curve.x.size(), g_min, g_max, sticking_velocity);
   s += detail::with_prefix(R"(
 /* 1 if grains meeting at g [m/s] stick. */
-static int PREFIX_sticks(double g) { return PREFIX_nt_sticks(&PREFIX_table, g); }
+static inline int PREFIX_sticks(double g) { return PREFIX_nt_sticks(&PREFIX_table, g); }
 /* eps^N at g [m/s]; NaN outside [g_min, g_max]. */
-static double PREFIX_cor(double g) { return PREFIX_nt_cor(&PREFIX_table, g); }
+static inline double PREFIX_cor(double g) { return PREFIX_nt_cor(&PREFIX_table, g); }
 #endif
 )",
                            prefix);

@@ -160,7 +160,7 @@ std::string TangentialTable::to_c_header(const std::string& prefix) const {
                    prefix, row_count(), s.size(), order, x0, dx, asperity_size);
   h += detail::with_prefix(fmt::format(R"(
 /* eps^T at g^N, g^T [m/s]; NaN outside the table's range. */
-static double PREFIX_cor_tangential(double gn, double gt) {{
+static inline double PREFIX_cor_tangential(double gn, double gt) {{
   if (!(gn >= {:.17g} && gn <= {:.17g} && gt >= {:.17g} && gt <= {:.17g})) return NAN;
   return PREFIX_tt_cor(&PREFIX_table, gn, gt, 0);
 }}
