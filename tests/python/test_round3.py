@@ -1,6 +1,6 @@
-"""Issue 40, round 3 of what a new user trips over (docs/hardening.md, "Round 3"): a closed pipe
+"""Issue 40, round 3 of what a new user trips over (docs/hardening.md, "round 3"): a closed pipe
 where SIGPIPE is ignored is a normal end (point 8), Ctrl-C on a curve's JSON leaves a valid
-document (point 8).
+document (point 8), closed forms beyond their validity are None (point A1).
 """
 import json
 import os
@@ -64,3 +64,27 @@ def test_sigint_on_curve_json_prints_a_valid_partial_document(tmp_path):
     assert str(len(doc["points"])) in doc["interrupted"]
     velocities = [point["velocity"] for point in doc["points"]]
     assert velocities == sorted(velocities) and velocities[0] == 1.0
+
+
+def test_closed_forms_beyond_their_validity_are_none_in_python():
+    """A1: K13 (26)-(27) gave e_d = -1.71 and e_i = 1.39 for 0.1 um ice grains at 10 m/s (5.57 A/t_H = 2.7)."""
+    import math
+
+    import bounce
+    pair, model = bounce.Pair(material="water-ice", radius=5e-8), bounce.Model("krijt", tvis=1e-11)
+    one = bounce.closed_forms(pair, model, 10.0)
+    assert one["e_d"] is None and one["e_i"] is None
+    assert "5.57 A/t_H <= 1" in one["warnings"][0]
+    assert bounce.collide(pair, model, 10.0)["closed_forms"]["e_d"] is None
+    many = bounce.closed_forms(pair, model, [10.0, 1e-3])  # a column: NaN where null
+    assert math.isnan(many["e_d"][0]) and math.isnan(many["e_i"][0])
+    assert "warnings" not in many
+    valid = bounce.closed_forms(bounce.Pair(material="water-ice", radius=1e-6), model, 8.0)
+    assert 0.0 <= valid["e_d"] <= 1.0 and 0.0 <= valid["e_i"] <= 1.0 and "warnings" not in valid
+    csv = subprocess.run([CLI, "curve", "--material", "quartz", "--radius", "1e-8", "--model", "krijt", "--tvis", "1e-8",
+                          "--velocities", "0.001:2900:5", "--log", "--closed-forms", "--csv"],
+                         capture_output=True, text=True, check=True)
+    rows = [line.split(",") for line in csv.stdout.splitlines()]
+    e_d, e_i = rows[0].index("e_d"), rows[0].index("e_i")
+    assert all(row[e_d] == "" and row[e_i] == "" for row in rows[1:])  # main: -7.1e3 to -1.4e5, 7.1e3 to 1.4e5
+    assert "5.57 A/t_H <= 1" in csv.stderr
