@@ -3,10 +3,8 @@
 // (docs/architecture.md); docs/cli.md is the contract.
 #include "cli.hpp"
 
-#include <unistd.h>
 
 #include <algorithm>
-#include <csignal>
 #include <iostream>
 #include <map>
 #include <string_view>
@@ -21,16 +19,10 @@
 #include "atlas.hpp"
 #include "commands.hpp"
 #include "completion.hpp"
+#include "interrupt.hpp"
 #include "output.hpp"
 
 namespace {
-
-// Async-signal-safe: write(2) and _exit(2) only. The rows already flushed stay where they went.
-extern "C" void on_interrupt(int /*signal*/) {
-  static const char message[] = "bounce: interrupted (SIGINT): the output written so far is kept\n";
-  [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message, sizeof message - 1);
-  ::_exit(130);
-}
 
 // The options of a (sub)command as typed: "--velocity", "--help", ...
 std::vector<std::string> long_options(const CLI::App& app) {
@@ -140,12 +132,7 @@ std::string missing_value(const CLI::ArgumentMismatch& e) {
 
 namespace bounce::cli {
 
-void exit_on_interrupt() {
-  struct sigaction action {};
-  action.sa_handler = on_interrupt;
-  sigemptyset(&action.sa_mask);
-  ::sigaction(SIGINT, &action, nullptr);
-}
+void exit_on_interrupt() { install_interrupt_handler(); }
 
 int run(int argc, const char* const* argv) {
   CLI::App app{"bounce: will two adhesive, viscoelastic spheres bounce or stick?", "bounce"};

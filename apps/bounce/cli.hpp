@@ -9,7 +9,8 @@ namespace bounce::cli {
 int run(int argc, const char* const* argv);
 
 /// Ctrl-C (SIGINT) ends the process with exit code 130 and one line on stderr; what was written
-/// to stdout stays (the streamed rows of a curve or a table are flushed one by one, docs/cli.md).
+/// to stdout stays (the streamed rows of a curve or a table are flushed one by one, docs/cli.md),
+/// and a JSON document being built is closed with the points it has (interrupt.hpp).
 /// main() installs it; the in-process fuzz target does not.
 void exit_on_interrupt();
 

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include <iostream>
+#include <optional>
 #include <iterator>
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "batch.hpp"
+#include "interrupt.hpp"
 #include "output.hpp"
 #include "stream.hpp"
 #include "text.hpp"
@@ -41,6 +43,11 @@ std::string read_file(const std::string& option, const std::string& path, const 
 }
 
 using Setup = std::function<std::function<int()>(Options&)>;
+
+std::string interrupted_note(std::size_t points) {
+  return fmt::format("Ctrl-C (SIGINT) after {} points: the points computed so far; the boundaries were not searched",
+                     points);
+}
 
 std::function<int()> materials(Options& o) {
   const bool* json = o.add_flag("json", "print JSON");
@@ -112,6 +119,35 @@ std::function<int()> collide(Options& o) {
   };
 }
 
+// A curve's JSON: the points wait in a temporary file for the boundaries, which sort first. A
+// Ctrl-C before the end closes the document with the points computed so far ("boundaries": null
+// and "interrupted" saying why), exit 130.
+int curve_json(const api::Inputs& inputs, Progress& report) {
+  JsonSpool points;
+  std::optional<Record> rest;
+  {
+    DeferredInterrupt hold;
+    try {
+      rest = api::curve(inputs, [&](const Record& p) { points.add(p, 1); check_interrupt(); }, std::ref(report));
+    } catch (const Interrupted&) {
+    }
+  }
+  if (rest) require_finite(*rest);
+  std::cout << "{\n  \"boundaries\": ";
+  if (rest) {
+    write_json(std::cout, rest->at("boundaries"), 1);
+  } else {
+    std::cout << "null,\n  \"interrupted\": " << nlohmann::json(interrupted_note(points.size())).dump();
+  }
+  std::cout << ",\n  \"points\": ";
+  points.print_list(std::cout, 1);
+  std::cout << "\n}\n";
+  if (rest) return 0;
+  std::cerr << fmt::format("bounce: interrupted (SIGINT): the {} points computed so far are printed as a whole JSON "
+                           "document (\"interrupted\" says so)\n", points.size());
+  return 130;
+}
+
 std::function<int()> curve(Options& o) {
   const bool* json = o.add_flag("json", "print JSON");
   o.add_flag("csv", "print CSV (the default)");
@@ -119,17 +155,7 @@ std::function<int()> curve(Options& o) {
   return [&o, json, progress] {
     one_format(o, {"json", "csv"});
     Progress report("bounce curve", *progress);
-    if (*json) {  // the points wait in a temporary file for the boundaries, which sort first
-      JsonSpool points;
-      const Record rest = api::curve(o.inputs(), [&](const Record& p) { points.add(p, 1); }, std::ref(report));
-      require_finite(rest);
-      std::cout << "{\n  \"boundaries\": ";
-      write_json(std::cout, rest.at("boundaries"), 1);
-      std::cout << ",\n  \"points\": ";
-      points.print_list(std::cout, 1);
-      std::cout << "\n}\n";
-      return 0;
-    }
+    if (*json) return curve_json(o.inputs(), report);
     CsvStream rows;  // each row written as it is computed; CSV has no place for the boundaries
     WarningTally warnings;
     api::curve(
@@ -164,11 +190,20 @@ std::function<int()> sticking(Options& o) {
       return 0;
     }
     Progress report("bounce sticking", *progress);
-    if (*json) {
+    if (*json) {  // a Ctrl-C closes the list after the radii done (exit 130)
       JsonListStream rows;
-      api::sticking_over_radii(in, [&rows](const Record& r) { rows.add(r); }, std::ref(report));
+      bool interrupted = false;
+      {
+        DeferredInterrupt hold;
+        try {
+          api::sticking_over_radii(in, [&rows](const Record& r) { rows.add(r); check_interrupt(); }, std::ref(report));
+        } catch (const Interrupted&) {
+          interrupted = true;
+        }
+      }
       rows.close();
-      return 0;
+      if (interrupted) std::cerr << "bounce: interrupted (SIGINT): the radii done so far are printed as a whole JSON list\n";
+      return interrupted ? 130 : 0;
     }
     CsvStream rows;
     WarningTally warnings;

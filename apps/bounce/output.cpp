@@ -1,7 +1,9 @@
 #include "output.hpp"
 
+#include <poll.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -60,6 +62,20 @@ void check_table_json(const nlohmann::json& value, const std::string& path) {
   } else if (value.is_array()) {
     for (std::size_t i = 0; i < value.size(); ++i) check_table_json(value[i], path + "[" + std::to_string(i) + "]");
   }
+}
+
+// The reader of stdout went away: a pipe whose read end is closed (poll: POLLERR) or a socket
+// hung up. A full disk or another failure is not that.
+bool reader_gone() {
+  if (errno == EPIPE) return true;
+  pollfd out{STDOUT_FILENO, POLLOUT, 0};
+  return ::poll(&out, 1, 0) == 1 && (out.revents & (POLLERR | POLLHUP)) != 0;
+}
+
+int output_failed() {
+  if (reader_gone()) return 0;
+  std::cerr << "bounce: error: could not write the results (standard output failed)\n";
+  return 3;
 }
 
 double now_seconds() {
@@ -138,15 +154,17 @@ void Progress::operator()(std::size_t done, std::size_t total) {
                            100.0 * static_cast<double>(done) / static_cast<double>(total), t);
 }
 
+void require_output() {
+  if (!std::cout) throw OutputFailed{};
+}
+
 int run_guarded(const std::function<int()>& body, const std::set<std::string>& options, const api::Inputs& typed) {
   try {
     const int code = body();
     std::cout.flush();
-    if (!std::cout) {  // a write error is an error: the results did not arrive
-      std::cerr << "bounce: error: could not write the results (standard output failed)\n";
-      return 3;
-    }
-    return code;
+    return std::cout ? code : output_failed();  // a write error is an error: the results did not arrive
+  } catch (const OutputFailed&) {
+    return output_failed();
   } catch (const InvalidArgument& caught) {
     const InvalidArgument e = api::as_typed(caught, typed);
     const bool option = options.count(e.parameter()) > 0;

@@ -54,10 +54,18 @@ class Progress {
   std::size_t last_total_ = 0;
 };
 
+/// Standard output failed: thrown by the streams at the first row that could not be written, so
+/// that the computation stops there.
+struct OutputFailed {};
+/// Throws OutputFailed when std::cout has failed.
+void require_output();
+
 /// Runs a command under the error policy: InvalidArgument -> one line on stderr naming the
 /// option (a parameter in `options` as --name) and its value as typed (`typed`, the inputs
 /// given), exit 2; NumericalError -> one line, exit 3; anything else -> exit 4. A failed write
-/// to stdout is an error too (exit 3): the results did not arrive.
+/// to stdout is an error too (exit 3): the results did not arrive; but a reader that went away
+/// (`| head -2` where SIGPIPE is ignored: EPIPE) is a normal end, exit 0 and nothing said, as
+/// SIGPIPE's default would have ended it.
 int run_guarded(const std::function<int()>& body, const std::set<std::string>& options, const api::Inputs& typed = {});
 
 }  // namespace bounce::cli

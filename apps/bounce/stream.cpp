@@ -138,9 +138,11 @@ void CsvStream::write(const Table& rows) {
     for (std::size_t i = 0; i < row.size(); ++i) text += (i ? "," : "") + csv_cell(row[i], i);
     text += '\n';
     std::cout << text << std::flush;
+    require_output();  // a closed pipe stops the computation at the first row it refuses
     text.clear();
   }
   if (!text.empty()) std::cout << text << std::flush;  // a header without rows
+  require_output();
 }
 
 void WarningTally::add(const Value& result) { walk(result, ""); }
@@ -185,6 +187,7 @@ void JsonListStream::add(const Value& element) {
   std::cout << (first_ ? "[\n" : ",\n") << indent(1);
   write_json(std::cout, element, 1);
   std::cout.flush();
+  require_output();
   first_ = false;
 }
 

@@ -71,6 +71,7 @@ class JsonSpool {
   void add(const Value& element, int depth);
   /// The elements as a JSON list at `depth`, to `out`.
   void print_list(std::ostream& out, int depth);
+  std::size_t size() const { return count_; }
 
  private:
   std::FILE* file_ = nullptr;

@@ -65,9 +65,13 @@ std::string collide_text(const Record& out) {
       num(e, "initial_kinetic"), num(e, "final_kinetic"), num(e, "bulk_dissipated"), num(e, "crack_dissipated"),
       num(e, "plastic_dissipated"), num(e, "elastic_remaining"), num(e, "surface_remaining"));
   if (out.contains("closed_forms")) {
-    for (const auto& [key, value] : sorted(out.at("closed_forms").record())) {
-      s += fmt::format("  {:<28} {:.6g}\n", key, value.number());
+    const Record& closed = out.at("closed_forms").record();
+    for (const auto& [key, value] : sorted(closed)) {
+      if (key == "warnings") continue;  // with the other warnings, below
+      s += value.is_null() ? fmt::format("  {:<28} null (beyond its validity: see the warning)\n", key)
+                           : fmt::format("  {:<28} {:.6g}\n", key, value.number());
     }
+    if (closed.contains("warnings")) s += lines("warning", closed.at("warnings"));
   }
   return s + lines("note", out.at("notes")) + lines("warning", out.at("warnings"));
 }

@@ -298,7 +298,8 @@ def k13_fig5(quick: bool = False) -> Figure:
     for i, r in enumerate(r_eff):  # one pair per radius (the loop over speeds would run in C++)
         pair = b.Pair(material=K13_MATERIAL, radius=2 * r)
         cor[i] = b.collide(pair, model, velocity)["cor"]
-        e_i[i] = b.closed_forms(pair, model, velocity)["e_i"]
+        closed = b.closed_forms(pair, model, velocity)["e_i"]
+        e_i[i] = np.nan if closed is None else closed  # None beyond (26)'s validity
     fig = _figure(11.0, 4.4)
     left, right = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
     left.plot(r_eff * 1e6, cor, "-", color="C3", lw=1.6, label="bounce (K13 model)")

@@ -1,6 +1,7 @@
 // collide (one speed or an array of them), closed_forms, viscoelastic_scales, sticking.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 
 #include <fmt/format.h>
@@ -107,25 +108,34 @@ py::dict curve(const PyPair& pair, const PyModel& model, const py::object& veloc
   return collide_many(in, Array(std::vector<py::ssize_t>{}, &one));
 }
 
-std::vector<std::pair<std::string, double>> closed_forms_at(const api::Case& c, double v) {
-  const auto forms = analysis::named_values(analysis::closed_forms(c.pair, c.model, check_speed("velocity", v)));
-  require_finite_results(to_record(forms), v);
-  return forms;
+// The closed forms at v as a Record: one beyond its validity None, with "warnings" saying why.
+Record closed_forms_at(const api::Case& c, double v) {
+  const analysis::ClosedForms forms = analysis::closed_forms(c.pair, c.model, check_speed("velocity", v));
+  Record r;
+  for (const auto& [key, value] : analysis::named_values(forms)) r.set(key, value ? Value(*value) : Value());
+  if (!forms.warnings.empty()) r.set("warnings", forms.warnings);
+  require_finite_results(r, v);
+  return r;
 }
 
 py::object closed_forms(const PyPair& pair, const PyModel& model, const py::object& velocity) {
   const api::Case c = make_case(pair, model);
   const auto speeds = to_numbers("velocity", velocity);
-  if (const double* v = std::get_if<double>(&speeds)) return to_python(to_record(closed_forms_at(c, *v)));
+  if (const double* v = std::get_if<double>(&speeds)) return to_python(closed_forms_at(c, *v));
   const Array& v = std::get<Array>(speeds);
-  // the keys depend on the pair and the model, not on the speed
-  const auto keys = closed_forms_at(c, v.size() > 0 ? v.data()[0] : 1.0);
+  // the keys depend on the pair and the model, not on the speed; a null is NaN in its column
+  const Record keys = closed_forms_at(c, v.size() > 0 ? v.data()[0] : 1.0);
   std::map<std::string, Array> columns;
   std::map<std::string, double*> cells;
-  for (const auto& [key, value] : keys) cells[key] = columns.try_emplace(key, shape_of(v)).first->second.mutable_data();
+  for (const auto& [key, value] : keys.fields()) {
+    if (key != "warnings") cells[key] = columns.try_emplace(key, shape_of(v)).first->second.mutable_data();
+  }
   const double* speeds_i = v.data();
   for_each_index(v.size(), [&](py::ssize_t i) {
-    for (const auto& [key, value] : closed_forms_at(c, speeds_i[i])) cells.at(key)[i] = value;
+    const Record at = closed_forms_at(c, speeds_i[i]);  // named: fields() refers into it
+    for (const auto& [key, value] : at.fields()) {
+      if (key != "warnings") cells.at(key)[i] = value.is_null() ? std::nan("") : value.number();
+    }
   });
   py::dict d;
   for (const auto& [key, column] : columns) d[py::str(key)] = column;
@@ -191,8 +201,9 @@ void bind_collisions(py::module_& m) {
         "hertz_time_k13_22 always; with a surface energy (gamma > 0) (24) e_jkr, (25) sticking_velocity_k13_25 and the "
         "exact sticking_velocity_jkr, (11) tabor_parameter; with a dissipative constant A (26) e_d and "
         "dissipative_constant, and (27) e_i with both; BP04 (8.95), (8.98) for adhesive-viscoelastic; K13 (28), "
-        "(29), (33) with a yield strength. A key that does not apply is absent (docs/python.md). An array of "
-        "speeds gives arrays.");
+        "(29), (33) with a yield strength. A key that does not apply is absent (docs/python.md); e_d and e_i are "
+        "None beyond (26)'s validity (5.57 A/t_H > 1), with `warnings` saying so. An array of speeds gives arrays "
+        "(NaN for None).");
   m.def("viscoelastic_scales", &viscoelastic_scales, py::arg("pair"), py::arg("model"), py::arg("velocity"),
         "BP04 §8.3 scales of a Hertz-type collision with A > 0: A [s], C0, kappa (8.70), g* (8.88) [m/s], "
         "q = (g/g*)^{1/5}, xi0 (8.65) [m], the exact Hertz contact time [s].");

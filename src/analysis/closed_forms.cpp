@@ -1,5 +1,9 @@
 #include "bounce/analysis/closed_forms.hpp"
 
+#include <cmath>
+
+#include <fmt/format.h>
+
 #include "bounce/analysis/collide.hpp"
 #include "bounce/analytic/adhesive.hpp"
 #include "bounce/analytic/master_curve.hpp"
@@ -25,6 +29,23 @@ void add_adhesive(ClosedForms& c, const Pair& pair, const models::Model& model, 
   }
 }
 
+// K13 (26)-(27). (26) is the first order of e_D in A / t_H (BSHP96's expansion of the
+// viscoelastic COR): valid for 5.57 A / t_H << 1, and beyond 1 it is negative and (27) above 1
+// (e_D^2 > 1). There both are left out with a warning naming the condition (docs/adhesive.md).
+void add_viscous(ClosedForms& c, double dissipative_constant) {
+  c.dissipative_constant = dissipative_constant;
+  const double e_d = analytic::cor_viscous_k13(dissipative_constant, c.hertz_time_k13_22);  // K13 (26)
+  if (e_d >= 0.0 || !std::isfinite(e_d)) {  // -inf (t_H underflowed to 0): kept, refused as not finite
+    c.e_d = e_d;
+    if (c.e_jkr) c.e_i = analytic::cor_independent(*c.e_jkr, e_d);  // K13 (27)
+    return;
+  }
+  c.warnings.push_back(fmt::format(
+      "{} null: K13 (26) e_D = 1 - 5.57 A/t_H is first order in A/t_H and holds for 5.57 A/t_H <= 1, here {:.3g} "
+      "(A = {:.3g} s, t_H = {:.3g} s): the dissipation is not small",
+      c.e_jkr ? "e_d (26) and e_i (27) are" : "e_d (26) is", 1.0 - e_d, dissipative_constant, c.hertz_time_k13_22));
+}
+
 }  // namespace
 
 ClosedForms closed_forms(const Pair& pair, const models::Model& model, double v) {
@@ -37,11 +58,7 @@ ClosedForms closed_forms(const Pair& pair, const models::Model& model, double v)
   if (!declared.jkr && gamma && *gamma > 0.0) {
     c.tabor_parameter = contact::surface::tabor_parameter(r, e, *gamma, model.z0);  // K13 (11)
   }
-  if (declared.viscous && model.dissipative_constant) {
-    c.dissipative_constant = *model.dissipative_constant;
-    c.e_d = analytic::cor_viscous_k13(*c.dissipative_constant, c.hertz_time_k13_22);  // K13 (26)
-    if (c.e_jkr) c.e_i = analytic::cor_independent(*c.e_jkr, *c.e_d);                // K13 (27)
-  }
+  if (declared.viscous && model.dissipative_constant) add_viscous(c, *model.dissipative_constant);
   if (model.yield_strength) {
     c.yield_velocity = analytic::yield_velocity(r, m, e, *model.yield_strength);  // K13 (28)
     c.e_plastic = analytic::cor_thornton_ning(v, *c.yield_velocity);             // K13 (29)
@@ -50,8 +67,8 @@ ClosedForms closed_forms(const Pair& pair, const models::Model& model, double v)
   return c;
 }
 
-std::vector<std::pair<std::string, double>> named_values(const ClosedForms& c) {
-  std::vector<std::pair<std::string, double>> v;
+std::vector<std::pair<std::string, std::optional<double>>> named_values(const ClosedForms& c) {
+  std::vector<std::pair<std::string, std::optional<double>>> v;
   const auto put = [&v](const char* key, const std::optional<double>& x) {
     if (x) v.emplace_back(key, *x);
   };
@@ -61,8 +78,8 @@ std::vector<std::pair<std::string, double>> named_values(const ClosedForms& c) {
   v.emplace_back("hertz_time_k13_22", c.hertz_time_k13_22);
   put("tabor_parameter", c.tabor_parameter);
   put("dissipative_constant", c.dissipative_constant);
-  put("e_d", c.e_d);
-  put("e_i", c.e_i);
+  if (c.dissipative_constant) v.emplace_back("e_d", c.e_d);  // null beyond (26)'s validity
+  if (c.dissipative_constant && c.e_jkr) v.emplace_back("e_i", c.e_i);
   put("tensile_work_bp04_8_95", c.tensile_work_bp04_8_95);
   put("e_ad_bp04_8_98", c.e_ad_bp04_8_98);
   put("yield_velocity", c.yield_velocity);

@@ -191,11 +191,16 @@ NormalTable NormalTable::from_json(const std::string& text) {
   }
 }
 
+// Every number in its shortest round-trip form. The last node is g_max and, without sticking,
+// the first is g_min (the builder's ends): printed as given, not v_s + exp(x) (19.99999999999998
+// for 20); the other velocities are v_s + exp(x).
 std::string NormalTable::to_csv() const {
+  const double offset = sticking_velocity > 0.0 ? sticking_velocity : 0.0;
+  const std::size_t n = curve.x.size();
   std::string s = "velocity,x,cor,slope,outcome\n";
-  for (std::size_t i = 0; i < curve.x.size(); ++i) {
-    const double g = (sticking_velocity > 0.0 ? sticking_velocity : 0.0) + std::exp(curve.x[i]);
-    s += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{}\n", g, curve.x[i], curve.f[i], curve.slope[i],
+  for (std::size_t i = 0; i < n; ++i) {
+    const double g = i + 1 == n ? g_max : i == 0 && offset == 0.0 ? g_min : offset + std::exp(curve.x[i]);
+    s += fmt::format("{},{},{},{},{}\n", g, curve.x[i], curve.f[i], curve.slope[i],
                      curve.label[i] != 0.0 ? "bounce" : "stick");
   }
   return s;
@@ -217,9 +222,9 @@ std::string NormalTable::to_c_header(const std::string& prefix) const {
       prefix, curve.x.size(), g_min, g_max, sticking_velocity);
   s += detail::with_prefix(R"(
 /* 1 if grains meeting at g [m/s] stick. */
-static int PREFIX_sticks(double g) { return PREFIX_nt_sticks(&PREFIX_table, g); }
+static inline int PREFIX_sticks(double g) { return PREFIX_nt_sticks(&PREFIX_table, g); }
 /* eps^N at g [m/s]; NaN outside [g_min, g_max]. */
-static double PREFIX_cor(double g) { return PREFIX_nt_cor(&PREFIX_table, g); }
+static inline double PREFIX_cor(double g) { return PREFIX_nt_cor(&PREFIX_table, g); }
 #endif
 )",
                            prefix);

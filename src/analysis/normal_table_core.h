@@ -6,7 +6,8 @@
  *
  * Plain C99 that also compiles as C++ (it needs <math.h>): the library includes this file,
  * and `bounce table ... --c-header P` writes it into the header with the prefix P on every
- * name, so both run the same algorithm. */
+ * name, so both run the same algorithm. Every function is static inline: a client that calls
+ * one of them gets no "defined but not used" warning for the others (-Wall -Werror). */
 
 typedef struct {
   long n;               /* nodes */
@@ -23,13 +24,13 @@ typedef struct {
 } nt_table;
 
 /* Cubic Hermite on [x0, x1]. */
-static double nt_hermite(double x0, double f0, double d0, double x1, double f1, double d1, double x) {
+static inline double nt_hermite(double x0, double f0, double d0, double x1, double f1, double d1, double x) {
   double h = x1 - x0, t = (x - x0) / h, t2 = t * t, t3 = t2 * t;
   return (2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * h * d0 + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * h * d1;
 }
 
 /* The value of the piece labelled `want` at x (extrapolated beyond its ends); NaN without one. */
-static double nt_in_piece(const nt_curve *c, double want, double at) {
+static inline double nt_in_piece(const nt_curve *c, double want, double at) {
   long first = -1, last = -1, i;
   for (i = 0; i < c->n; ++i) {
     if (c->label[i] != want) continue;
@@ -44,7 +45,7 @@ static double nt_in_piece(const nt_curve *c, double want, double at) {
 }
 
 /* The last node at or before `at` (0 before the first), at most n - 2. */
-static long nt_interval(const nt_curve *c, double at) {
+static inline long nt_interval(const nt_curve *c, double at) {
   long lo = 0, hi = c->n - 1;
   if (at >= c->x[c->n - 1]) return c->n - 2;
   if (!(at > c->x[0])) return 0;
@@ -56,7 +57,7 @@ static long nt_interval(const nt_curve *c, double at) {
 }
 
 /* The label at x: inside a jump's bracket, the side of the nearer node. */
-static double nt_label_at(const nt_curve *c, double at) {
+static inline double nt_label_at(const nt_curve *c, double at) {
   long i;
   if (at < c->x[0]) return c->label[0];
   if (at >= c->x[c->n - 1]) return c->label[c->n - 1];
@@ -66,7 +67,7 @@ static double nt_label_at(const nt_curve *c, double at) {
 }
 
 /* The curve at x: Hermite inside a piece, the piece of nt_label_at across a jump. */
-static double nt_curve_at(const nt_curve *c, double at) {
+static inline double nt_curve_at(const nt_curve *c, double at) {
   long i = nt_interval(c, at);
   if (c->label[i] == c->label[i + 1]) {
     return nt_hermite(c->x[i], c->f[i], c->d[i], c->x[i + 1], c->f[i + 1], c->d[i + 1], at);
@@ -76,7 +77,7 @@ static double nt_curve_at(const nt_curve *c, double at) {
 
 /* 1 if grains meeting at g [m/s] stick, 0 if they bounce; -1 outside [g_min, g_max], where
    the table knows nothing (as nt_cor's NaN: never an extrapolated outcome). */
-static int nt_sticks(const nt_table *t, double g) {
+static inline int nt_sticks(const nt_table *t, double g) {
   double offset, x;
   if (!(g >= t->g_min * (1 - 1e-12) && g <= t->g_max * (1 + 1e-12))) return -1;
   if (t->sticking_velocity > 0 && g <= t->sticking_velocity) return 1;
@@ -87,7 +88,7 @@ static int nt_sticks(const nt_table *t, double g) {
 }
 
 /* eps^N at g [m/s]; NaN outside [g_min, g_max]. */
-static double nt_cor(const nt_table *t, double g) {
+static inline double nt_cor(const nt_table *t, double g) {
   double offset, x;
   if (!(g >= t->g_min * (1 - 1e-12) && g <= t->g_max * (1 + 1e-12))) return NAN;
   if (t->sticking_velocity > 0 && g <= t->sticking_velocity) return 0.0;

@@ -137,7 +137,7 @@ std::string TangentialTable::to_csv() const {
     const double gn = std::exp(x0 + static_cast<double>(r) * dx), tau_end = rows[r * detail::tt_row_values];
     for (std::size_t j = 0; j < n; ++j) {
       const double* v = nodes.data() + (r * n + j) * detail::tt_node_values;
-      out += fmt::format("{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", r, gn, s[j],
+      out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", r, gn, s[j],
                          tau_end * s[j] * s[j], v[0], v[1], v[2], v[3], v[4], v[5]);
     }
   }
@@ -160,7 +160,7 @@ std::string TangentialTable::to_c_header(const std::string& prefix) const {
                    prefix, row_count(), s.size(), order, x0, dx, asperity_size);
   h += detail::with_prefix(fmt::format(R"(
 /* eps^T at g^N, g^T [m/s]; NaN outside the table's range. */
-static double PREFIX_cor_tangential(double gn, double gt) {{
+static inline double PREFIX_cor_tangential(double gn, double gt) {{
   if (!(gn >= {:.17g} && gn <= {:.17g} && gt >= {:.17g} && gt <= {:.17g})) return NAN;
   return PREFIX_tt_cor(&PREFIX_table, gn, gt, 0);
 }}

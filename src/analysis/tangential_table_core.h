@@ -14,7 +14,8 @@
  *
  * Plain C99 that also compiles as C++ (it needs <math.h>): the library includes this file,
  * and `bounce table --tangential-velocities ... --c-header P` writes it into the header with
- * the prefix P on every name, so both run the same algorithm. */
+ * the prefix P on every name, so both run the same algorithm. Every function is static inline:
+ * a client that calls one of them gets no "defined but not used" warning for the others. */
 
 typedef struct {
   int rows, nodes, order; /* order: number of rows in a Lagrange stencil */
@@ -28,7 +29,7 @@ typedef struct {
 enum { tt_row_values = 2, tt_node_values = 6, tt_max_order = 12 };
 
 /* The rows of the stencil around x = ln g^N and their Lagrange weights. */
-static int tt_stencil(const tt_table *t, double x, double *w) {
+static inline int tt_stencil(const tt_table *t, double x, double *w) {
   double pos = (x - t->x0) / t->dx;
   int first = (int)floor(pos) - (t->order - 1) / 2, i, k;
   if (first < 0) first = 0;
@@ -44,7 +45,7 @@ static int tt_stencil(const tt_table *t, double x, double *w) {
 }
 
 /* Values interpolated across the stencil: `count` values starting at `offset` of each row's block of `stride`. */
-static void tt_mix(const tt_table *t, const double *data, long stride, long offset, int count, int first,
+static inline void tt_mix(const tt_table *t, const double *data, long stride, long offset, int count, int first,
                    const double *w, double *out) {
   int i, k;
   for (k = 0; k < count; ++k) out[k] = 0.0;
@@ -55,7 +56,7 @@ static void tt_mix(const tt_table *t, const double *data, long stride, long offs
 }
 
 /* Quintic through (f0, d0, e0) at t = 0 and (f1, d1, e1) at t = 1 (derivatives in t). */
-static void tt_quintic(double f0, double d0, double e0, double f1, double d1, double e1, double *c) {
+static inline void tt_quintic(double f0, double d0, double e0, double f1, double d1, double e1, double *c) {
   double F, D, E;
   c[0] = f0;
   c[1] = d0;
@@ -68,16 +69,16 @@ static void tt_quintic(double f0, double d0, double e0, double f1, double d1, do
   c[5] = 6.0 * F - 3.0 * D + 0.5 * E;
 }
 
-static double tt_poly(const double *c, double t) {
+static inline double tt_poly(const double *c, double t) {
   return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
 }
 
-static double tt_dpoly(const double *c, double t) {
+static inline double tt_dpoly(const double *c, double t) {
   return c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * (4.0 * c[4] + t * 5.0 * c[5])));
 }
 
 /* The Hermite data of y1, y1', y2, y2' in s at one node: q[4][3] = value, d/ds, d2/ds2 (times h, h^2). */
-static void tt_node_data(const double *n, double s, double tau_end, double h, double q[4][3]) {
+static inline void tt_node_data(const double *n, double s, double tau_end, double h, double q[4][3]) {
   const double ts = 2.0 * tau_end * s, tss = 2.0 * tau_end, K = n[4], Kp = n[5];
   int i;
   for (i = 0; i < 2; ++i) {
@@ -93,7 +94,7 @@ static void tt_node_data(const double *n, double s, double tau_end, double h, do
 
 /* Root of the polynomial c minus `level` in [a, b] (a sign change there), by bisection
  * steps guarding regula falsi (Illinois) to the last bits. */
-static double tt_root(const double *c, int derivative, double level, double a, double b) {
+static inline double tt_root(const double *c, int derivative, double level, double a, double b) {
   double fa = (derivative ? tt_dpoly(c, a) : tt_poly(c, a)) - level;
   double fb = (derivative ? tt_dpoly(c, b) : tt_poly(c, b)) - level;
   int side = 0, it;
@@ -120,7 +121,7 @@ static double tt_root(const double *c, int derivative, double level, double a, d
 /* The first t in [a, b] where |P| reaches `level` (|P(a)| < level), or -1. P is split at
  * the zeros of P' into monotone pieces: in each, |P| reaches the level iff it does at the
  * piece's end; a maximum of |P| just reaching it is a break (as in the direct integration). */
-static double tt_first_reach(const double *c, double level, double a, double b) {
+static inline double tt_first_reach(const double *c, double level, double a, double b) {
   const int sub = 4;
   int k;
   double u = a;
@@ -142,7 +143,7 @@ static double tt_first_reach(const double *c, double level, double a, double b) 
 
 /* eps^T at (g^N, g^T) [m/s]; NaN outside the table's g^N range. `breaks` (may be NULL)
  * receives the number of asperities that broke. */
-static double tt_cor(const tt_table *t, double gn, double gt, long *breaks) {
+static inline double tt_cor(const tt_table *t, double gn, double gt, long *breaks) {
   double w[tt_max_order], rowv[tt_row_values], lo[tt_node_values], hi[tt_node_values];
   double qa[4][3], qb[4][3];
   double x = log(gn), tau_end, level, budget, a = 1.0, b = 0.0, z = 1.0;

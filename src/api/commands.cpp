@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <regex>
+#include <string>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -230,14 +231,49 @@ Points parse_points(const std::string& name, const std::string& text, bool log) 
   return Points{lo, hi, static_cast<std::size_t>(n), log};
 }
 
+namespace {
+
+// `x` times 10^decades, computed on x's shortest decimal form (0.01 -> "0.01e1"), so that the
+// result is the decimal value correctly rounded: 0.1, not 0.01 * 10 = 0.10000000000000001.
+double shifted_by_decades(double x, long decades) {
+  std::string text = fmt::format("{}", x);
+  long exponent = decades;
+  if (const auto e = text.find('e'); e != std::string::npos) {
+    exponent += std::stol(text.substr(e + 1));
+    text.resize(e);
+  }
+  text += fmt::format("e{}", exponent);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size() ? value : x * std::pow(10.0, static_cast<double>(decades));
+}
+
+// Point i of n on a log grid from lo to hi (0 < i < n - 1). Where HI/LO is a whole number m of
+// decades (to 1e-12 of a decade: the round-off of log10(hi/lo) is ~1e-15) and point i lies a
+// whole number of decades i m / (n - 1) above LO, it is LO shifted by those decades, exactly as
+// typed (0.01:100:9 gives 0.1, 1 and 10), and between them LO 10^(i m / (n - 1)); elsewhere
+// LO (HI/LO)^f by exp and log.
+double log_point(double lo, double hi, std::size_t i, std::size_t n) {
+  const double decades = std::log10(hi / lo), m = std::round(decades);  // hi / lo may overflow: inf
+  if (m >= 1.0 && m <= 1000.0 && std::abs(decades - m) <= 1e-12) {
+    const auto steps = static_cast<long>(i) * static_cast<long>(m), intervals = static_cast<long>(n - 1);
+    if (steps % intervals == 0) return shifted_by_decades(lo, steps / intervals);
+    return lo * std::pow(10.0, static_cast<double>(steps) / static_cast<double>(intervals));  // 1 ulp, not exp-log's ~5
+  }
+  const double f = static_cast<double>(i) / static_cast<double>(n - 1);
+  return std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo)));
+}
+
+}  // namespace
+
 double Points::operator[](std::size_t i) const {
   if (lo == hi) return lo;  // N copies (exp(log 3) need not be 3: the fuzzer's 3:3:127)
   if (i == 0) return lo;
   if (i + 1 >= n) return hi;
+  if (log) return log_point(lo, hi, i, n);
   const double f = static_cast<double>(i) / static_cast<double>(n - 1), span = hi - lo;
-  return log                  ? std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo)))
-         : std::isfinite(span) ? lo + f * span
-                               : (1.0 - f) * lo + f * hi;  // HI - LO overflows (-1e308:1e308); both forms are monotone in f
+  return std::isfinite(span) ? lo + f * span
+                             : (1.0 - f) * lo + f * hi;  // HI - LO overflows (-1e308:1e308); both forms are monotone in f
 }
 
 std::vector<double> parse_range(const std::string& name, const std::string& text, bool log) {

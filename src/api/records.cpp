@@ -105,8 +105,13 @@ void add_scales(Record& out, const Pair& pair, const models::Model& model, doubl
   out.set("hertz_contact_time", s.hertz_contact_time);
 }
 
+// A closed form beyond its validity is null, with the warning saying why (absent otherwise).
 Record closed_forms_record(const Pair& pair, const models::Model& model, double velocity) {
-  return to_record(analysis::named_values(analysis::closed_forms(pair, model, velocity)));
+  const analysis::ClosedForms forms = analysis::closed_forms(pair, model, velocity);
+  Record r;
+  for (const auto& [key, value] : analysis::named_values(forms)) r.set(key, value ? Value(*value) : Value());
+  if (!forms.warnings.empty()) r.set("warnings", forms.warnings);
+  return r;
 }
 
 Record merged_record(const Pair& pair, double velocity) {

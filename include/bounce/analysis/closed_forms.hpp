@@ -19,7 +19,8 @@ struct ClosedForms {
   std::optional<double> sticking_velocity_k13_25;   ///< K13 (25) as printed [m/s]
   std::optional<double> e_jkr;                      ///< K13 (24)
   std::optional<double> tabor_parameter;            ///< K13 (11) with the model's z0
-  // With a dissipative constant A:
+  // With a dissipative constant A (e_d and e_i absent, while A is present, where (26) fails
+  // its condition 5.57 A / t_H <= 1: first order in A / t_H, it would leave [0, 1]):
   std::optional<double> dissipative_constant;       ///< A [s]
   std::optional<double> e_d;                        ///< K13 (26) as printed
   std::optional<double> e_i;                        ///< K13 (27) (with gamma too)
@@ -30,13 +31,15 @@ struct ClosedForms {
   std::optional<double> yield_velocity;             ///< K13 (28) [m/s]
   std::optional<double> e_plastic;                  ///< K13 (29)
   std::optional<double> plastic_length_scale;       ///< K13 (33) [m]
+  std::vector<std::string> warnings;                 ///< why a closed form that applies is null
 };
 
 /// The closed forms that apply to `model` at impact speed `velocity` [m/s].
 ClosedForms closed_forms(const Pair& pair, const models::Model& model, double velocity);
 
-/// The values that are present, by the field names above (the keys of the CLI's
-/// "closed_forms" JSON and of Python's closed_forms()).
-std::vector<std::pair<std::string, double>> named_values(const ClosedForms& forms);
+/// The closed forms that apply, by the field names above (the keys of the CLI's "closed_forms"
+/// JSON and of Python's closed_forms()); std::nullopt for one that applies but lies outside its
+/// validity (e_d, e_i; `warnings` says why): null in JSON, an empty CSV field, None in Python.
+std::vector<std::pair<std::string, std::optional<double>>> named_values(const ClosedForms& forms);
 
 }  // namespace bounce::analysis
