@@ -14,6 +14,7 @@
 3. strong scaling: 103 823 grains on 1 and 2 ranks (loop time).
 
     /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR [bed|scaling]]  (after make lammps; bed: 1. only, scaling: the strong scaling only)
+    /usr/bin/python3 bench/lammps_speed.py BUILD_DIR against OLD/bounceplugin.so   (this plugin beside another)
 """
 import os
 import re
@@ -255,8 +256,38 @@ def scaling():
           f"1 rank {times[1]:.2f} s, 2 ranks {times[2]:.2f} s: speed-up {times[1] / times[2]:.2f}")
 
 
+def against(other, reps=7):
+    """This build's plugin side by side with another bounceplugin.so (one kept from before a change),
+    on the dense gas with friction, interleaved: the Pair section per step and contact, the fastest
+    of `reps` runs of each, pair granular (frictionless) as the machine's yardstick."""
+    if not os.path.isfile(other):
+        sys.exit(f"lammps_speed.py: against = {other} is invalid: expected the path of a bounceplugin.so")
+    mass = 4.0 / 3.0 * 3.141592653589793 * RADIUS ** 3 * DENSITY
+    eta = 2 * A * E / (2 * (1 - NU * NU)) / (mass / 2)
+    stock = f"hertz/material {E!r} {eta!r} {NU} damping viscoelastic tangential linear_nohistory 0 0"
+    ours = f"viscoelastic E {E!r} nu {NU} A {A} friction 0.3 asperity 1e-6"
+    runs = [("pair granular (frictionless)", "granular", stock, L.PLUGIN), (f"bounce, {other}", "bounce", ours, other),
+            ("bounce, this build", "bounce", ours, L.PLUGIN)]
+    best, mine = {}, L.PLUGIN
+    for _ in range(reps):
+        for label, style, coeff, plugin in runs:
+            L.PLUGIN = plugin
+            out = dense(style, coeff, 24, 1500)
+            per = section(out, "Pair") / 1500 / contacts(out)
+            best.setdefault(label, []).append(per)
+    L.PLUGIN = mine
+    base = min(best[runs[1][0]])
+    for label, _, _, _ in runs:
+        times = best[label]
+        print(f"  {label:50s} fastest {min(times) * 1e9:6.1f} ns/contact (x{min(times) / base:.3f} of the other "
+              f"plugin's), runs {min(times) * 1e9:.1f}-{max(times) * 1e9:.1f}")
+
+
 if __name__ == "__main__":
     start = time.time()
+    if len(sys.argv) > 3 and sys.argv[2] == "against":  # this build's plugin beside another
+        against(os.path.abspath(sys.argv[3]))
+        sys.exit(0)
     if len(sys.argv) > 2 and sys.argv[2] in ("bed", "scaling"):  # one part alone
         {"bed": bed_per_contact, "scaling": scaling}[sys.argv[2]]()
         print(f"({time.time() - start:.0f} s)")

@@ -3,6 +3,8 @@
 // motion, the contact's kinematics, the step's settings, the contact's force and the loads it puts
 // on both bodies.
 
+#include <cmath>
+
 #include "bounce/dem/step_check.hpp"
 #include "bounce/models/contact_law.hpp"
 
@@ -25,10 +27,6 @@ struct Kinematics {
   double sliding[3];  ///< the contact points' relative velocity in the tangent plane [m/s]
 };
 
-/// Two spheres at distance r > 0 (as pair granular takes them; the lever arm is the radius).
-Kinematics pair_kinematics(const Motion& i, const Motion& j, double r);
-/// A sphere and a flat wall whose normal into the box is `sign` (+1 or -1) along `axis`.
-Kinematics wall_kinematics(const Motion& i, int axis, double sign, double overlap);
 
 struct StepSettings {
   double dt;
@@ -47,7 +45,10 @@ struct ContactForce {
   double bulk_dissipated = 0.0;
   double elastic = 0.0;
   double surface = 0.0;
-  bool finite() const;
+  bool finite() const {
+    return std::isfinite(normal) && std::isfinite(tangential[0]) && std::isfinite(tangential[1]) &&
+           std::isfinite(tangential[2]);
+  }
 };
 
 /// What a sub-model beyond the normal law is given: the contact, and the normal law's force at
@@ -74,6 +75,52 @@ struct Loads {
   double torque1[3];
   double torque2[3];
 };
-Loads loads(const ContactForce& c, const Kinematics& k, double radius1, double radius2);
+
+/// Two spheres at distance r > 0 (as pair granular takes them; the lever arm is the radius).
+/// Inline: it runs once per neighbour pair and step.
+inline Kinematics pair_kinematics(const Motion& i, const Motion& j, double r) {
+  Kinematics k;
+  const double rinv = 1.0 / r;
+  for (int d = 0; d < 3; d++) k.n[d] = (i.x[d] - j.x[d]) * rinv;
+  k.overlap = i.radius + j.radius - r;
+  const double vr[3] = {i.v[0] - j.v[0], i.v[1] - j.v[1], i.v[2] - j.v[2]};
+  k.vn = vr[0] * k.n[0] + vr[1] * k.n[1] + vr[2] * k.n[2];
+  const double wr[3] = {i.radius * i.omega[0] + j.radius * j.omega[0], i.radius * i.omega[1] + j.radius * j.omega[1],
+                        i.radius * i.omega[2] + j.radius * j.omega[2]};
+  k.sliding[0] = vr[0] - k.vn * k.n[0] - (k.n[2] * wr[1] - k.n[1] * wr[2]);
+  k.sliding[1] = vr[1] - k.vn * k.n[1] - (k.n[0] * wr[2] - k.n[2] * wr[0]);
+  k.sliding[2] = vr[2] - k.vn * k.n[2] - (k.n[1] * wr[0] - k.n[0] * wr[1]);
+  return k;
+}
+
+/// A sphere and a flat wall whose normal into the box is `sign` (+1 or -1) along `axis`.
+inline Kinematics wall_kinematics(const Motion& i, int axis, double sign, double overlap) {
+  const double *v = i.v, *o = i.omega, r = i.radius;
+  Kinematics k;
+  k.n[0] = k.n[1] = k.n[2] = 0.0;
+  k.n[axis] = sign;
+  k.overlap = overlap;
+  k.vn = sign * v[axis];
+  // The contact point's velocity in the tangent plane: v + omega x (-R n).
+  const double spin[3] = {-r * (o[1] * k.n[2] - o[2] * k.n[1]), -r * (o[2] * k.n[0] - o[0] * k.n[2]),
+                          -r * (o[0] * k.n[1] - o[1] * k.n[0])};
+  for (int d = 0; d < 3; d++) k.sliding[d] = v[d] + spin[d];
+  k.sliding[axis] = 0.0;
+  return k;
+}
+
+// BSHP96 (10): the torque of F^T at the contact point, -R n x F^T on each body.
+inline Loads loads(const ContactForce& c, const Kinematics& k, double radius1, double radius2) {
+  Loads l;
+  const double* ft = c.tangential;
+  for (int d = 0; d < 3; d++) l.force[d] = k.n[d] * c.normal + ft[d];
+  const double arm[3] = {k.n[1] * ft[2] - k.n[2] * ft[1], k.n[2] * ft[0] - k.n[0] * ft[2],
+                         k.n[0] * ft[1] - k.n[1] * ft[0]};
+  for (int d = 0; d < 3; d++) {
+    l.torque1[d] = -(radius1 * arm[d]);
+    l.torque2[d] = -(radius2 * arm[d]);
+  }
+  return l;
+}
 
 }  // namespace bounce::dem
