@@ -30,11 +30,22 @@ void require_finite_results(const Value& results, double velocity) {
   }
 }
 
+// Each kind of warning once (bounce::message_kind), with its latest text.
+void merge_warnings(std::vector<std::string>& all, const std::vector<std::string>& more) {
+  for (const std::string& w : more) {
+    const std::string kind = message_kind(w.substr(w.find(": ") + 2));
+    const auto same = std::find_if(all.begin(), all.end(),
+                                   [&](const std::string& a) { return message_kind(a.substr(a.find(": ") + 2)) == kind; });
+    if (same == all.end()) all.push_back(w);
+    else *same = w;
+  }
+}
+
 // collide() over speeds, in pieces between which Ctrl-C is checked: each piece (one front
 // door call, GIL released) is sized from the last one's time per collision to take about
 // 20 ms (at most twice the last, at most 4096 speeds), so the checks cost nothing and a
 // KeyboardInterrupt arrives within about one piece.
-Table collide_in_pieces(const api::Inputs& inputs, const std::vector<double>& v) {
+Table collide_in_pieces(const api::Inputs& inputs, const std::vector<double>& v, std::vector<std::string>& warnings) {
   using Clock = std::chrono::steady_clock;
   constexpr double target = 0.02;  // s
   Table all;
@@ -45,11 +56,13 @@ Table collide_in_pieces(const api::Inputs& inputs, const std::vector<double>& v)
                                    v.begin() + static_cast<std::ptrdiff_t>(done + n));
     const auto start = Clock::now();
     Table t;
+    std::vector<std::string> said;
     {
       py::gil_scoped_release release;
-      t = api::collide_columns(inputs, part);
+      t = api::collide_columns(inputs, part, &said);
     }
     check_signals();
+    merge_warnings(warnings, said);
     if (all.columns.empty()) all.columns = t.columns;
     for (auto& row : t.rows) all.rows.push_back(std::move(row));
     done += n;
@@ -68,7 +81,8 @@ std::size_t column_of(const Table& t, const char* name) {
 // of the input's shape, and `stick` (bool) beside `outcome`.
 py::dict collide_many(const api::Inputs& inputs, const Array& speeds) {
   const std::vector<double> v(speeds.data(), speeds.data() + speeds.size());
-  const Table t = collide_in_pieces(inputs, v);
+  std::vector<std::string> warnings;
+  const Table t = collide_in_pieces(inputs, v, warnings);
   const std::size_t velocity = column_of(t, "velocity"), outcome = column_of(t, "outcome");
   py::array_t<bool> stick(shape_of(speeds));
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
@@ -83,6 +97,9 @@ py::dict collide_many(const api::Inputs& inputs, const Array& speeds) {
   const py::tuple shape = py::cast(shape_of(speeds));
   for (const auto& [key, column] : d) d[key] = column.attr("reshape")(shape);
   d["stick"] = stick;
+  // The validity warnings the CLI's curve prints, one per kind: in the dict, and as Python warnings.
+  d["warnings"] = py::cast(warnings);
+  for (const std::string& w : warnings) warn_validity(w);
   return d;
 }
 
@@ -98,6 +115,7 @@ py::object collide(const PyPair& pair, const PyModel& model, const py::object& v
     out = api::collide(in);
   }
   require_finite_results(out, v);
+  for (const Value& w : out.contains("warnings") ? out.at("warnings").list() : Value::List{}) warn_validity(w.text());
   return to_python(out);
 }
 
@@ -164,7 +182,37 @@ py::dict viscoelastic_scales(const PyPair& pair, const PyModel& model, const py:
   return to_python(r);
 }
 
+// The sticking velocity at each radius of body 1 (numpy in, a dict of arrays of its shape out;
+// NaN where none was found, with its note): one radius per front-door call, Ctrl-C between them.
+py::dict sticking_over_radii(const api::Inputs& in, const py::handle& radii_given) {
+  if (py::isinstance<py::str>(radii_given))
+    refuse_type("radii", radii_given, "an array of radii [m] (e.g. numpy.geomspace(1e-7, 1e-4, 30))");
+  const Array radii = to_array("radii", radii_given);
+  Value::List rows;
+  for (py::ssize_t i = 0; i < radii.size(); ++i) {
+    {
+      py::gil_scoped_release release;
+      api::sticking_over_radii(in, {radii.data()[i]}, [&rows](const Record& row) { rows.push_back(row); }, {});
+    }
+    check_signals();
+  }
+  if (radii.size() == 0) api::sticking_over_radii(in, {}, [](const Record&) {}, {});  // the inputs still checked
+  py::dict d = table_to_python(api::sticking_table(Value(rows)));
+  const py::tuple shape = py::cast(shape_of(radii));
+  for (const auto& [key, column] : d) d[key] = column.attr("reshape")(shape);
+  if (radii.size() == 0) d["note"] = py::module_::import("numpy").attr("asarray")(py::list(), "str");
+  return d;
+}
+
 py::object sticking(const PyPair& pair, const PyModel& model, const py::kwargs& options) {
+  if (options.contains("radii")) {
+    py::kwargs rest;
+    for (const auto& [key, value] : options)
+      if (py::str(key).cast<std::string>() != "radii") rest[key] = value;
+    api::Inputs in = case_inputs(pair, model, rest);
+    in.erase("radius");  // the sweep's radii replace the Pair's
+    return sticking_over_radii(in, options["radii"]);
+  }
   const api::Inputs in = case_inputs(pair, model, options);
   Record out;
   {
@@ -190,12 +238,14 @@ void bind_collisions(py::module_& m) {
         "tangential_velocity [m/s], trajectory=True (adds 'trajectory', a dict of arrays), trajectory_points, "
         "follow_time [s] (krijt, jkr-viscoelastic), and any numerical setting of the model (method, tolerance, "
         "adhesive_tolerance, stiff_engine). An array of speeds gives a dict of arrays of its shape (velocity, cor, "
-        "outcome, stick, contact_time, max_overlap, bulk_dissipated, crack_dissipated; cor_tangential when oblique), "
-        "computed in C++ (Ctrl-C interrupts it).");
+        "outcome, stick, contact_time, max_overlap, bulk_dissipated, crack_dissipated; cor_tangential when oblique; "
+        "warnings, each kind once), computed in C++ (Ctrl-C interrupts it). Validity warnings are also raised as "
+        "bounce.ValidityWarning.");
   m.def("curve", &curve, py::arg("pair"), py::arg("model"), py::arg("velocities"),
         "The COR curve over an array of impact speeds [m/s] (the CLI's `bounce curve`): collide() over the array, a "
         "dict of arrays of its shape (velocity, cor, outcome, stick, contact_time, max_overlap, bulk_dissipated, "
-        "crack_dissipated; cor_tangential with a tangential_velocity), the loop in C++ (Ctrl-C interrupts it).");
+        "crack_dissipated; cor_tangential with a tangential_velocity) and `warnings`, the validity warnings the CLI "
+        "prints (each kind once, also raised as bounce.ValidityWarning); the loop in C++ (Ctrl-C interrupts it).");
   m.def("closed_forms", &closed_forms, py::arg("pair"), py::arg("model"), py::arg("velocity"),
         "The closed forms that apply to the pair and model at impact speed(s) `velocity` [m/s]: K13 (22) "
         "hertz_time_k13_22 always; with a surface energy (gamma > 0) (24) e_jkr, (25) sticking_velocity_k13_25 and the "
@@ -210,7 +260,10 @@ void bind_collisions(py::module_& m) {
   m.def("sticking", &sticking, py::arg("pair"), py::arg("model"),
         "The sticking velocity of an adhesive model with its bracket, the collisions it took and the closed forms: "
         "the keys of `bounce sticking --json` (keyword relative_tolerance, default 1e-6). sticking_velocity is None, "
-        "with a note, where the grains stick at every speed up to the transversal sound speed.");
+        "with a note, where the grains stick at every speed up to the transversal sound speed. With radii=array "
+        "(body 1's radius [m], replacing the Pair's; body 2's follows it unless the Pair gives radius2): a dict of "
+        "arrays of its shape, as `bounce sticking --radii` (radius, effective_radius, sticking_velocity, "
+        "sticking_velocity_jkr, sticking_velocity_k13_25, note), NaN with a note where none was found.");
   m.def("sticking_velocity", &sticking_velocity, py::arg("pair"), py::arg("model"),
         py::arg("relative_tolerance") = 1e-6,
         "The sticking velocity [m/s] of an adhesive model (bisection on the outcome to relative_tolerance), or None "

@@ -146,6 +146,17 @@ py::dict table_to_python(const Table& t) {
   return out;
 }
 
+namespace {
+PyObject* validity_warning = nullptr;  // bounce.ValidityWarning, made by the module
+}  // namespace
+
+void set_validity_warning(PyObject* type) { validity_warning = type; }
+
+void warn_validity(const std::string& text) {
+  if (PyErr_WarnEx(validity_warning != nullptr ? validity_warning : PyExc_UserWarning, text.c_str(), 1) < 0)
+    throw py::error_already_set();  // warnings turned into errors
+}
+
 void refuse_type(std::string_view name, const py::handle& value, std::string_view expected) {
   std::string shown = py::repr(value).cast<std::string>();
   if (shown.size() > 80) shown = shown.substr(0, 76) + " ...";

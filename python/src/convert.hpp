@@ -59,6 +59,10 @@ api::Inputs to_inputs(const py::kwargs& kwargs);
 /// The pending Ctrl-C (or another signal's handler error) as a Python exception: call with
 /// the GIL held, between pieces of a long computation.
 void check_signals();
+/// Raises bounce.ValidityWarning (a UserWarning) with `text`: a validity condition of the model
+/// that does not hold, as the CLI prints it on stderr.
+void warn_validity(const std::string& text);
+void set_validity_warning(PyObject* type);
 /// The same from code that runs with the GIL released (a progress callback).
 void check_signals_without_gil();
 

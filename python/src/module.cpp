@@ -40,6 +40,13 @@ PYBIND11_MODULE(_bounce, m) {
       PyErr_SetString(PyExc_RuntimeError, e.what());
     }
   });
+  // The CLI's validity warnings (strain, T_vis against the contact time, K13 (A.2), ...) in Python.
+  PyObject* validity = PyErr_NewExceptionWithDoc("bounce._bounce.ValidityWarning",
+                                                 "A validity condition of the model does not hold at these inputs "
+                                                 "(the warnings the CLI prints on stderr).",
+                                                 PyExc_UserWarning, nullptr);
+  m.attr("ValidityWarning") = pybind11::reinterpret_borrow<pybind11::object>(validity);
+  python::set_validity_warning(validity);
   python::bind_objects(m);
   python::bind_collisions(m);
   python::bind_contact(m);

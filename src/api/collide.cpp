@@ -1,5 +1,6 @@
 // The front door's collisions: collide, curve (sweeps over speeds or radii), and the columns
 // of a sweep.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include "binding.hpp"
 #include "bounce/analysis/closed_forms.hpp"
 #include "bounce/analysis/curve.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/models/registry.hpp"
 #include "records.hpp"
@@ -215,7 +217,7 @@ Table curve_table(const Record& curve) {
   return t;
 }
 
-Table collide_columns(const Inputs& inputs, const std::vector<double>& velocities) {
+Table collide_columns(const Inputs& inputs, const std::vector<double>& velocities, std::vector<std::string>* warnings) {
   const detail::Bound bound = detail::bind_inputs(command("collide"), inputs);
   check_oblique(bound);
   const Case c = detail::make_case(bound);
@@ -226,8 +228,15 @@ Table collide_columns(const Inputs& inputs, const std::vector<double>& velocitie
   Table t;
   t.columns = {"velocity", "cor", "outcome", "contact_time", "max_overlap", "bulk_dissipated", "crack_dissipated"};
   if (oblique) t.columns.push_back("cor_tangential");
+  std::vector<std::string> kinds;  // message_kind of each of *warnings
   for (const double v : velocities) {
     const auto o = analysis::collide(c.pair, c.model, v, options);
+    for (const std::string& w : warnings ? o.warnings : std::vector<std::string>{}) {
+      const std::string kind = message_kind(w), text = fmt::format("at velocity {:g}: {}", v, w);
+      const auto at = std::find(kinds.begin(), kinds.end(), kind);
+      if (at == kinds.end()) kinds.push_back(kind), warnings->push_back(text);
+      else (*warnings)[static_cast<std::size_t>(at - kinds.begin())] = text;
+    }
     std::vector<Value> row = {v, o.cor, dynamics::to_string(o.outcome), o.contact_time, o.max_overlap,
                               o.energy.bulk_dissipated, o.energy.crack_dissipated};
     if (oblique) row.push_back(o.tangential ? Value(o.tangential->cor) : Value());

@@ -13,6 +13,7 @@
 #include "bounce/contact/law.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/core/suggest.hpp"
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/pair_parameters.hpp"
 
@@ -65,7 +66,8 @@ std::string who(const CommandSpec& command) {
                           fmt::format("no {} with {}: it belongs to bounce {}", name, who(command), fmt::join(owners, ", ")));
   }
   throw InvalidArgument(name, value_given,
-                        fmt::format("a parameter that {} takes: one of {}", who(command), fmt::join(names, ", ")));
+                        fmt::format("a parameter that {} takes: one of {}{}", who(command), fmt::join(names, ", "),
+                                    did_you_mean(name, names)));
 }
 
 // Does `command` work with the model `name`?

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "bounce/core/error.hpp"
+#include "bounce/core/suggest.hpp"
 #include "bounce/models/registry.hpp"
 #include "bounce/pair/pair_parameters.hpp"
 #include "fit_plan.hpp"
@@ -65,7 +66,8 @@ std::vector<ParameterSpec> chosen_parameters(const std::string& model, const std
     const auto it = std::find_if(offered.begin(), offered.end(), [&](const ParameterSpec& s) { return s.name == w; });
     if (it == offered.end()) {
       throw InvalidArgument("fit", text.empty() ? w : text,
-                            fmt::format("parameters that model {} can fit: some of {}", model, fmt::join(names, ", ")));
+                            fmt::format("parameters that model {} can fit: some of {} ({} is none of them{})", model,
+                                        fmt::join(names, ", "), w, did_you_mean(w, names)));
     }
     if (std::any_of(out.begin(), out.end(), [&](const ParameterSpec& s) { return s.name == w; })) {
       throw InvalidArgument("fit", text, "each parameter once");

@@ -1,11 +1,15 @@
 // The front door's sticking velocity, alone or against the radius (K13 fig. 5, right),
 // beside its closed forms.
+#include <cmath>
+#include <vector>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "binding.hpp"
 #include "bounce/analysis/sticking.hpp"
 #include "bounce/analytic/adhesive.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/models/registry.hpp"
 
@@ -69,15 +73,16 @@ Record sticking(const Inputs& inputs, const Progress&) {
   require_model(inputs);
   const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
   bound.own.refuse_given(std::array{"log"}, "radii with it (log spaces the radii)");
-  bound.own.refuse_given(std::array{"radii"}, "none for one sticking velocity (sticking_over_radii)");
+  bound.own.refuse_given(std::array{"radii"}, "none for one sticking velocity (radii give one for each radius)");
   return sticking_record(detail::make_case(bound));
 }
 
-void sticking_over_radii(const Inputs& inputs, const PointSink& sink, const Progress& progress) {
-  require_model(inputs);
-  const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
-  const auto radii = detail::parse_points("radii", bound.own.text("radii"), bound.own.flag("log"));
-  if (radii.front() <= 0.0) throw InvalidArgument("radii", bound.own.text("radii"), "radii > 0 m (LO > 0)");
+namespace {
+
+// The sticking velocity at each radius of body 1, one Record each (with its radius); a threshold
+// that cannot be found is reported in its row, not fatal.
+template <class Radii>  // detail::Points or std::vector<double>
+void over_radii(const detail::Bound& bound, const Radii& radii, const PointSink& sink, const Progress& progress) {
   // Every radius's case first: a stream cannot take back its rows, so a bad one is refused before.
   for (std::size_t i = 0; i < radii.size(); ++i) (void)detail::make_case(bound, radii[i]);
   for (std::size_t i = 0; i < radii.size(); ++i) {
@@ -96,6 +101,26 @@ void sticking_over_radii(const Inputs& inputs, const PointSink& sink, const Prog
   }
 }
 
+}  // namespace
+
+void sticking_over_radii(const Inputs& inputs, const PointSink& sink, const Progress& progress) {
+  require_model(inputs);
+  const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
+  const auto radii = detail::parse_points("radii", bound.own.text("radii"), bound.own.flag("log"));
+  if (radii.front() <= 0.0) throw InvalidArgument("radii", bound.own.text("radii"), "radii > 0 m (LO > 0)");
+  over_radii(bound, radii, sink, progress);
+}
+
+void sticking_over_radii(const Inputs& inputs, const std::vector<double>& radii, const PointSink& sink,
+                         const Progress& progress) {
+  require_model(inputs);
+  const detail::Bound bound = detail::bind_inputs(command("sticking"), inputs);
+  bound.own.refuse_given(std::array{"radii"}, "none with the radii given as numbers");
+  for (const double r : radii)
+    if (!(r > 0.0) || !std::isfinite(r)) throw InvalidArgument("radii", format_value(r), "radii > 0 m and finite");
+  over_radii(bound, radii, sink, progress);
+}
+
 Value sticking_over_radii(const Inputs& inputs, const Progress& progress) {
   Value::List rows;
   sticking_over_radii(inputs, [&rows](const Record& row) { rows.push_back(row); }, progress);
@@ -110,7 +135,7 @@ Table sticking_table(const Value& rows) {
     const Record& j = row.record();
     t.rows.push_back({j.at("radius"), j.at("effective_radius"), j.at("sticking_velocity"),
                       j.at("sticking_velocity_jkr"), j.at("sticking_velocity_k13_25"),
-                      j.contains("note") ? j.at("note") : Value()});
+                      j.contains("note") ? j.at("note") : Value(std::string())});
   }
   return t;
 }

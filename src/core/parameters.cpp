@@ -10,6 +10,7 @@
 
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
+#include "bounce/core/suggest.hpp"
 
 namespace bounce {
 
@@ -193,7 +194,8 @@ Parameters bind_parameters(std::span<const ParameterSpec> specs, const Parameter
       std::vector<std::string> names;
       for (const ParameterSpec& s : specs) names.push_back(s.name);
       throw InvalidArgument(name, value_text(value),
-                            fmt::format("a parameter of {}: one of {}", owner, fmt::join(names, ", ")));
+                            fmt::format("a parameter of {}: one of {}{}", owner, fmt::join(names, ", "),
+                                        did_you_mean(name, names)));
     }
     p.values_.emplace(name, checked(*spec, value));
     p.typed_.emplace(name, value);

@@ -104,13 +104,20 @@ Record curve(const Inputs& inputs, const PointSink& sink, const Progress& progre
 Table curve_table(const Record& curve);
 /// collide() over speeds as columns (velocity, cor, outcome, contact_time, max_overlap,
 /// bulk_dissipated, crack_dissipated, and cor_tangential when oblique): Python's arrays.
-Table collide_columns(const Inputs& inputs, const std::vector<double>& velocities);
+/// `warnings`: where given, each kind of validity warning the collisions gave, once, as the CLI's
+/// curve prints them ("at velocity 10: ..." of the last speed that gave it).
+Table collide_columns(const Inputs& inputs, const std::vector<double>& velocities,
+                      std::vector<std::string>* warnings = nullptr);
 Record sticking(const Inputs& inputs, const Progress& progress = {});
 /// With radii: a list of sticking records, one per radius (a radius without a threshold has
 /// sticking_velocity null and the reason in "note").
 Value sticking_over_radii(const Inputs& inputs, const Progress& progress = {});
 /// The same with each record handed to `sink` as it is computed, none kept.
 void sticking_over_radii(const Inputs& inputs, const PointSink& sink, const Progress& progress);
+/// The same at each of `radii` [m] (body 1's radius; body 2's follows it unless given): Python's
+/// sticking(..., radii=array).
+void sticking_over_radii(const Inputs& inputs, const std::vector<double>& radii, const PointSink& sink,
+                         const Progress& progress);
 Table sticking_table(const Value& rows);
 Record contact(const Inputs& inputs);
 /// The contact law's curve over forces, overlaps or contact radii (one of them given).
