@@ -12,6 +12,7 @@ packages=(
   libnlopt-cxx-dev libopenmpi-dev openmpi-bin libhdf5-dev gfortran
   pybind11-dev python3 python3-dev python3-numpy python3-matplotlib
   python3-scipy python3-pytest python3-emcee python3-h5py
+  help2man gzip
   "$@"
 )
 

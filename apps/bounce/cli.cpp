@@ -19,6 +19,7 @@
 #include "atlas.hpp"
 #include "commands.hpp"
 #include "completion.hpp"
+#include "first_steps.hpp"
 #include "interrupt.hpp"
 #include "output.hpp"
 
@@ -128,6 +129,51 @@ std::string missing_value(const CLI::ArgumentMismatch& e) {
   return fmt::format("{} = (no value) is invalid: expected a value after {} (see --help)", name, name);
 }
 
+// `bounce help [COMMAND [SUBCOMMAND]]`: the help of bounce or of that command (exit 0), or the
+// rule's message for a word that is none (exit 2).
+int help_command(const CLI::App& app, int argc, const char* const* argv, const std::vector<std::string>& names) {
+  if (argc == 2) {
+    std::cout << app.help();
+    return 0;
+  }
+  const CLI::App* command = nullptr;
+  for (const CLI::App* c : app.get_subcommands({})) command = c->get_name() == argv[2] ? c : command;
+  if (command != nullptr && argc > 3) {
+    const CLI::App* sub = nullptr;
+    for (const CLI::App* c : command->get_subcommands({})) sub = c->get_name() == argv[3] ? c : sub;
+    command = sub;
+  }
+  if (command == nullptr || argc > (command->get_parent() == &app ? 3 : 4)) {
+    const std::string typed = argc > 3 && command == nullptr ? fmt::format("{} {}", argv[2], argv[3]) : argv[2];
+    std::cerr << "bounce: error: help = " << typed << " is invalid: expected a command, one of "
+              << fmt::format("{}", fmt::join(names, ", ")) << bounce::did_you_mean(argv[2], names) << '\n';
+    return 2;
+  }
+  std::cout << command->help(command->get_parent() == &app ? "bounce" : "bounce " + command->get_parent()->get_name());
+  return 0;
+}
+
+// A first word that is no command (`bounce colide --help`): refused with a suggestion, before
+// CLI11 would print bounce's own help for the --help that follows. Empty when it is one.
+std::string unknown_command(int argc, const char* const* argv, const std::vector<std::string>& names) {
+  if (argc < 2 || argv[1][0] == '-') return {};
+  const std::string word = argv[1];
+  if (word == "help" || std::find(names.begin(), names.end(), word) != names.end()) return {};
+  return fmt::format("command = {} is invalid: expected one of {} (or help){}", word, fmt::join(names, ", "),
+                     bounce::did_you_mean(word, names));
+}
+
+// A command run with nothing after its name that needs something: what it needs, and an example.
+std::string needs(const CLI::App& command, int argc) {
+  const std::string name = full_name(command);
+  const bounce::cli::FirstSteps* s = bounce::cli::first_steps(name);
+  const int words = name.find(' ') == std::string::npos ? 1 : 2;  // `collide`, `atlas query`
+  if (argc > 1 + words || s == nullptr || s->needs.empty()) return {};
+  return fmt::format("options = (none given) is invalid: expected what `bounce {}` needs: {}; e.g. `{}` (`bounce {} "
+                     "--help` lists every option)",
+                     name, s->needs, s->examples.front(), name);
+}
+
 }  // namespace
 
 namespace bounce::cli {
@@ -136,10 +182,11 @@ void exit_on_interrupt() { install_interrupt_handler(); }
 
 int run(int argc, const char* const* argv) {
   CLI::App app{"bounce: will two adhesive, viscoelastic spheres bounce or stick?", "bounce"};
+  app.formatter(std::make_shared<ExamplesFormatter>());  // before the commands, which inherit it
   app.require_subcommand(1);
   app.set_version_flag("--version", fmt::format("bounce {}", bounce::version()));
   app.set_help_all_flag("--help-all", "Print this help with every command's options");
-  app.footer("`bounce COMMAND --help` lists the options of a command.");
+  app.footer("`bounce COMMAND --help` (or `bounce help COMMAND`) lists the options of a command, with examples.");
   std::vector<Command> commands;
   std::vector<std::string> names;
   for (const auto& spec : bounce::api::commands()) {
@@ -156,8 +203,10 @@ int run(int argc, const char* const* argv) {
       return 0;
     }, {});
   }
-  if (const std::string repeated = repeated_option(argc, argv); !repeated.empty()) {
-    std::cerr << "bounce: error: " << repeated << '\n';
+  if (argc > 1 && std::string_view(argv[1]) == "help") return help_command(app, argc, argv, names);
+  for (const std::string& refused : {unknown_command(argc, argv, names), repeated_option(argc, argv)}) {
+    if (refused.empty()) continue;
+    std::cerr << "bounce: error: " << refused << '\n';
     return 2;
   }
   try {
@@ -184,7 +233,12 @@ int run(int argc, const char* const* argv) {
     return 2;
   }
   for (const Command& command : commands) {
-    if (command.app->parsed()) return run_guarded(command.run, command.options->all_names(), command.options->inputs());
+    if (!command.app->parsed()) continue;
+    if (const std::string missing = needs(*command.app, argc); !missing.empty()) {
+      std::cerr << "bounce: error: " << missing << '\n';
+      return 2;
+    }
+    return run_guarded(command.run, command.options->all_names(), command.options->inputs());
   }
   if (completion->parsed()) {
     return run_guarded([&app] {

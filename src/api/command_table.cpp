@@ -78,6 +78,9 @@ CommandSpec sticking_command() {
                                              "relative width of the final bracket (default 1e-6)"),
                               1e-6)}};
   c.unused = {{tangential_parameters(), "none with sticking: the sticking velocity is that of head-on collisions"}};
+  c.models = models::model_registry().names_where([](const models::ModelRow& r) { return r.traits.adhesive; });
+  c.models_why = fmt::format("an adhesive model ({}): one without adhesion never sticks", fmt::join(c.models, ", "));
+  c.model_required = true;
   return c;
 }
 

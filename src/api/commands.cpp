@@ -110,6 +110,13 @@ ParameterSpec keyword_parameter(const char* name, std::vector<std::string> names
   s.placeholder = "NAME";
   return s;
 }
+// A keyword among `names` that has no default: one must be named.
+ParameterSpec required_keyword(const char* name, std::vector<std::string> names) {
+  const std::string help = fmt::format("{} (required: no default)", fmt::join(names, " | "));
+  ParameterSpec s = choice_parameter(name, std::move(names), help);
+  s.placeholder = "NAME";
+  return s;
+}
 }  // namespace
 
 ParameterSpec model_parameter() {
@@ -135,7 +142,9 @@ std::vector<ParameterSpec> offered_parameters(std::string_view name) {
   const CommandSpec& c = command(name);
   std::vector<ParameterSpec> extra;
   if (c.takes_model) {
-    extra.push_back(c.models.empty() ? model_parameter() : keyword_parameter("model", c.models, default_model(c).c_str()));
+    extra.push_back(c.model_required ? required_keyword("model", c.models)
+                    : c.models.empty() ? model_parameter()
+                                       : keyword_parameter("model", c.models, default_model(c).c_str()));
     for (const auto& row : models::model_registry().rows()) {
       if (!takes_model(c, row.name)) continue;
       for (const ParameterSpec& s : row.parameters) {

@@ -51,6 +51,7 @@ struct CommandSpec {
   std::vector<std::string> models = {};   ///< the models it works with (empty: every model), from their traits
   std::string models_why = {};            ///< ... and why only those
   std::string default_model = {};         ///< empty: the registry's default (models::ModelRegistry::default_name)
+  bool model_required = false;            ///< no default model: one of `models` must be named (sticking)
   std::vector<Unused> unused = {};        ///< models' parameters it never uses (not offered, refused)
 };
 const std::vector<CommandSpec>& commands();
