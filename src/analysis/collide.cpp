@@ -17,6 +17,7 @@
 #include "bounce/dynamics/adhesive_collision.hpp"
 #include "bounce/dynamics/normal_collision.hpp"
 #include "bounce/dynamics/tangential.hpp"
+#include "bounce/pair/mixing.hpp"
 #include "warnings.hpp"
 
 namespace bounce::analysis {
@@ -24,6 +25,24 @@ namespace bounce::analysis {
 namespace {
 
 using dynamics::CollisionOutcome;
+
+// Which body's E, nu and density set c_t (BSHP96 (B3)), by the names the user gives them, and
+// whether E looks like a slip of unit: a small c_t is more often a wrong input (GPa typed as Pa)
+// than too fast a collision (issue 40, point 4).
+std::string sound_speed_inputs(const Pair& pair) {
+  const auto c_of = [](const Material& m) {
+    return transversal_sound_speed(m.youngs_modulus, m.poisson_ratio, m.density);  // BSHP96 (B3)
+  };
+  const bool second = !pair.body2().rigid && c_of(pair.body2().material) < c_of(pair.body1().material);
+  const Material& m = second ? pair.body2().material : pair.body1().material;
+  const std::string n = second ? "2" : "";
+  const std::string text = fmt::format(
+      "c_t = sqrt(E / (2 (1 + nu) density)) (BSHP96 (B3)) of body {}{}: E{} = {:g} Pa, nu{} = {:g}, density{} = {:g} "
+      "kg/m^3", second ? 2 : 1, m.name.empty() ? "" : " (" + m.name + ")", n, m.youngs_modulus, n, m.poisson_ratio, n,
+      m.density);
+  const std::string question = youngs_modulus_unit_question("E" + n, m.youngs_modulus);
+  return question.empty() ? text : text + "; " + question;
+}
 
 CollisionOutcome from_master(const Pair& pair, const models::Model& model, double velocity) {
   const ViscoelasticScales s = viscoelastic_scales(pair, model, velocity);
@@ -282,7 +301,8 @@ void require_impact_velocity(const Pair& pair, double velocity) {
   if (velocity > c_t) {
     throw InvalidArgument("velocity", format_value(velocity),
                           fmt::format("an impact velocity <= the transversal sound speed c_t = {:.4g} m/s, where the "
-                                      "quasi-static models end (BSHP96 (B11))", c_t));
+                                      "quasi-static models end (BSHP96 (B11)); {}",
+                                      c_t, sound_speed_inputs(pair)));
   }
   if (!std::isnormal(0.5 * pair.effective_mass() * velocity * velocity)) {
     throw InvalidArgument("velocity", format_value(velocity),

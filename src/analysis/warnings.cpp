@@ -37,16 +37,15 @@ CollisionTime collision_time(const CollisionOutcome& out, const Pair& pair, doub
   return {out.contact_time, "the contact time"};
 }
 
-// Young's moduli of grain materials run from soft gels and rubbers (~1e4-1e6 Pa) to diamond
-// (1.2e12 Pa): a value outside 1e3-1.5e12 Pa is most likely in the wrong unit (MPa or GPa
-// typed as a number of Pa). Accepted (any E > 0 is a valid input), but said.
+// An E outside the range of grain materials is accepted (any E > 0 is valid) but said: it is
+// most likely in the wrong unit (pair/material.hpp).
 void add_material_warnings(CollisionOutcome& out, const Pair& pair) {
-  constexpr double lowest = 1e3, highest = 1.5e12;
   const auto check = [&](const char* body, const Material& m) {
-    if (m.youngs_modulus >= lowest && m.youngs_modulus <= highest) return;
+    if (plausible_youngs_modulus(m.youngs_modulus)) return;
     out.warnings.push_back(fmt::format("{} ({}): Young's modulus E = {:g} Pa is outside {:g}-{:g} Pa, the range of grain "
                                        "materials from soft gels to diamond: is it in the unit [Pa]?",
-                                       body, m.name.empty() ? "explicit" : m.name, m.youngs_modulus, lowest, highest));
+                                       body, m.name.empty() ? "explicit" : m.name, m.youngs_modulus,
+                                       plausible_youngs_modulus_min, plausible_youngs_modulus_max));
   };
   check("body1", pair.body1().material);
   if (!pair.body2().rigid) check("body2", pair.body2().material);
