@@ -310,6 +310,27 @@ void require_impact_velocity(const Pair& pair, double velocity) {
   }
 }
 
+namespace {
+
+// BP04 (8.70) for a Hertz-type model. A so long (1e300 s, or T_vis / nu^2 with nu near 0) that
+// kappa overflows is an input no engine can take (the shifted and adhesive laws' states became
+// inf): refused naming A (issue 40, point 5). A = 0 is kappa = 0 (a huge E is no A's fault).
+double damping_kappa(const Pair& pair, const models::Model& model, double velocity) {
+  const double a = model.hertz->dissipative_constant;
+  if (a == 0.0) return 0.0;
+  const double kappa = analytic::kappa(a, model.hertz->force_constant, pair.effective_mass(), velocity);
+  if (!std::isfinite(kappa)) {
+    throw InvalidArgument("A", format_value(a),
+                          fmt::format("a dissipative constant (given, or T_vis / nu^2 by K13 after (18)) whose "
+                                      "dimensionless damping kappa (BP04 (8.70)) at g = {:g} m/s is finite in double "
+                                      "precision; the viscous models need A << the contact time (BSHP96 (B12))",
+                                      velocity));
+  }
+  return kappa;
+}
+
+}  // namespace
+
 ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& model, double velocity) {
   require_positive("velocity", velocity, "impact velocity [m/s]");
   if (!model.hertz) {
@@ -319,11 +340,7 @@ ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& mo
   s.dissipative_constant = model.hertz->dissipative_constant;
   s.force_constant = model.hertz->force_constant;
   const double m = pair.effective_mass();
-  s.kappa = analytic::kappa(s.dissipative_constant, s.force_constant, m, velocity);
-  if (!std::isfinite(s.kappa)) {
-    throw NumericalError(fmt::format("the dimensionless damping kappa (BP04 (8.70)) is {} for A = {:g} s and g = {:g} m/s: "
-                                     "outside double precision", format_value(s.kappa), s.dissipative_constant, velocity));
-  }
+  s.kappa = damping_kappa(pair, model, velocity);
   s.q = analytic::expansion_variable(s.kappa);
   s.characteristic_velocity = s.dissipative_constant > 0.0
                                   ? analytic::characteristic_velocity(s.dissipative_constant, s.force_constant, m)
@@ -335,6 +352,7 @@ ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& mo
 
 CollisionOutcome collide(const Pair& pair, const models::Model& model, double velocity, const CollideOptions& options) {
   require_impact_velocity(pair, velocity);
+  if (model.hertz) damping_kappa(pair, model, velocity);
   if (options.tangential_velocity > 0.0 && !model.tangential) {
     throw InvalidArgument("friction", "(not given)", "a friction coefficient mu >= 0 (BSHP96 (36))");
   }

@@ -136,6 +136,25 @@ void add_tangential_warnings(CollisionOutcome& out) {
       std::abs(out.tangential->cor), out.tangential->stiffness_work));
 }
 
+// Far outside the viscous models (docs/models.md, "Validity"): they expand in A/t_c and T_vis/t_c
+// (BSHP96 (B12), K13 (A.2)); a viscous time as long as the elastic contact itself describes no
+// real collision (nu = 1e-6 made A = T_vis/nu^2 = 10 s). Said first, before any other warning.
+void add_far_outside_warning(CollisionOutcome& out, const Pair& pair, const models::Model& model, double velocity) {
+  const double t_h = contact::hertz::collision_time(pair.hertz_constant(), pair.effective_mass(), velocity);
+  const auto* crack = std::get_if<models::CrackContact>(&model.normal);
+  const double a = model.dissipative_constant.value_or(0.0);
+  const double tvis = crack ? crack->parameters.relaxation_time : 0.0;
+  const bool by_a = a >= tvis;
+  const double longest = std::max(a, tvis);
+  if (!(longest >= t_h) || !(t_h > 0.0)) return;
+  out.warnings.insert(out.warnings.begin(),
+                      fmt::format("far outside the model's validity: {} = {:.3g} s is {:.3g} times the elastic contact "
+                                  "time t_H = {:.3g} s, where the viscous models need A, T_vis << t_c (BSHP96 (B12), "
+                                  "K13 (A.2)){}: this result describes no real collision",
+                                  by_a ? "A" : "T_vis", longest, longest / t_h, t_h,
+                                  by_a ? "; A is the given one or T_vis / nu^2 (K13 after (18))" : ""));
+}
+
 }  // namespace
 
 void add_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model, double velocity) {
@@ -149,6 +168,7 @@ void add_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& 
     add_adhesion_validity_warning(out, pair, velocity, adhesion == models::Adhesion::weak);
   }
   add_tangential_warnings(out);
+  add_far_outside_warning(out, pair, model, velocity);
 }
 
 }  // namespace bounce::analysis::detail

@@ -40,3 +40,53 @@ TEST(Blame, SoundSpeedOfTheSlowerBodyWithoutAQuestionWhenEIsPlausible) {
   EXPECT_FALSE(has(r.err, "is it in the unit")) << r.err;
 }
 
+// Point 5: nu = 0 lies inside -1 < nu < 0.5 but makes A = T_vis / nu^2 (K13 after (18)) infinite.
+// Main ended each model in exit 3 with its solver's words (krijt: "RODAS stopped ... CVODE, tried
+// next, too"; jkr-viscoelastic: "closed_forms.dissipative_constant = inf is outside the range of
+// double precision"; viscoelastic: "kappa ... is inf for A = inf s"). Now exit 2 naming --nu and tvis.
+TEST(Blame, PoissonRatioZeroWithTvisIsRefusedNamingBoth) {
+  for (const char* model : {"krijt", "jkr-viscoelastic", "maugis-viscoelastic", "viscoelastic", "viscoelastic-shifted",
+                            "adhesive-viscoelastic"}) {
+    const std::vector<std::string> args{"collide", "--material", "water-ice", "--radius", "1e-6", "--nu", "0",
+                                        "--model", model, "--tvis", "1e-11", "--velocity", "1"};
+    expect_rejected(args, "--nu", "0");
+    const std::string err = run_cli(args).err;
+    EXPECT_TRUE(has(err, "tvis = 1e-11 s")) << err;
+    EXPECT_TRUE(has(err, "A = T_vis / nu^2 (K13 after (18)) is beyond double precision")) << err;
+  }
+}
+
+// nu = 1e-6 made A = 10 s, a billion contact times: main integrated it (krijt "stick" after
+// 1.9e-17 s) with only the K13 (A.2) warning. Past 1e6 t_H(c_t) (docs/models.md) it is refused.
+TEST(Blame, TinyPoissonRatioWithTvisIsRefusedByTheDocumentedBound) {
+  const std::vector<std::string> args{"collide", "--material", "water-ice", "--radius", "1e-6", "--nu", "1e-6",
+                                      "--model", "krijt", "--tvis", "1e-11", "--velocity", "1"};
+  expect_rejected(args, "--nu", "1e-6");
+  const std::string err = run_cli(args).err;
+  EXPECT_TRUE(has(err, "A = T_vis / nu^2 (K13 after (18)) is 10 s")) << err;
+  EXPECT_TRUE(has(err, "1e+06 t_H(c_t)")) << err;
+}
+
+// The same bound for a given A or T_vis; main: RODAS's step size underflow (krijt), "state became
+// non-finite" (viscoelastic-shifted, adhesive-viscoelastic), "kappa is inf" (viscoelastic).
+TEST(Blame, ViscousTimesBeyondTheBoundAreRefused) {
+  expect_rejected({"collide", "--material", "water-ice", "--radius", "1e-6", "--model", "krijt", "--tvis", "1e-11",
+                   "--A", "1e300", "--velocity", "1"},
+                  "--A", "1e300");
+  expect_rejected({"collide", "--material", "water-ice", "--radius", "1e-6", "--model", "viscoelastic-shifted", "--A",
+                   "1e300", "--velocity", "1"},
+                  "--A", "1e300");
+  expect_rejected({"collide", "--material", "water-ice", "--radius", "1e-6", "--model", "krijt", "--tvis", "1e300",
+                   "--velocity", "1"},
+                  "--tvis", "1e300");
+}
+
+// Within the bound but as long as the contact itself: accepted, the first line of output says
+// the result describes no real collision (docs/models.md).
+TEST(Blame, ViscousTimeLongerThanTheContactIsWarnedFirst) {
+  const auto r = run_cli({"collide", "--material", "water-ice", "--radius", "1e-6", "--model", "viscoelastic", "--A",
+                          "1e-6", "--velocity", "1"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("warning: far outside the model's validity: A = 1e-06 s is ", 0), 0u) << r.out;
+}
+
