@@ -90,3 +90,16 @@ TEST(Blame, ViscousTimeLongerThanTheContactIsWarnedFirst) {
   EXPECT_EQ(r.out.rfind("warning: far outside the model's validity: A = 1e-06 s is ", 0), 0u) << r.out;
 }
 
+// Point 6: adhesive-viscoelastic with A = 0 is conservative, so no speed sticks; main ended in
+// exit 3 "e^N = 1.0000001257847 > 1: the integration created energy beyond its tolerance 1e-12
+// (tighten --tolerance)".
+TEST(Blame, StickingWithoutDampingSaysTheModelCannotStick) {
+  const std::vector<std::string> args{"sticking", "--material", "water-ice", "--radius", "1e-6",
+                                      "--model",  "adhesive-viscoelastic", "--A", "0"};
+  expect_rejected(args, "--A", "0");
+  const std::string err = run_cli(args).err;
+  EXPECT_TRUE(has(err, "conservative")) << err;
+  EXPECT_TRUE(has(err, "below 1.459 m/s")) << err;
+  EXPECT_FALSE(has(err, "tolerance")) << err;
+}
+
