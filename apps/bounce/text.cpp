@@ -45,8 +45,10 @@ std::string merged_line(const Record& m) {
 }  // namespace
 
 std::string collide_text(const Record& out) {
-  std::string s = fmt::format("model {} (contact end: {}, method: {}) at {:.6g} m/s\n", str(out, "model"),
-                              str(out, "contact_end"), str(out, "method"), num(out, "velocity"));
+  // The warnings first: one may say the result describes no real collision (docs/models.md).
+  std::string s = lines("warning", out.at("warnings"));
+  s += fmt::format("model {} (contact end: {}, method: {}) at {:.6g} m/s\n", str(out, "model"), str(out, "contact_end"),
+                   str(out, "method"), num(out, "velocity"));
   if (out.contains("kappa")) {
     s += fmt::format("kappa = {:.6g} (BP04 (8.70))", num(out, "kappa"));
     if (out.contains("characteristic_velocity")) s += fmt::format(", g* = {:.6g} m/s", num(out, "characteristic_velocity"));
@@ -73,7 +75,7 @@ std::string collide_text(const Record& out) {
     }
     if (closed.contains("warnings")) s += lines("warning", closed.at("warnings"));
   }
-  return s + lines("note", out.at("notes")) + lines("warning", out.at("warnings"));
+  return s + lines("note", out.at("notes"));
 }
 
 std::string contact_text(const Record& out) {

@@ -17,6 +17,7 @@
 #include "bounce/dynamics/adhesive_collision.hpp"
 #include "bounce/dynamics/normal_collision.hpp"
 #include "bounce/dynamics/tangential.hpp"
+#include "bounce/pair/mixing.hpp"
 #include "warnings.hpp"
 
 namespace bounce::analysis {
@@ -24,6 +25,24 @@ namespace bounce::analysis {
 namespace {
 
 using dynamics::CollisionOutcome;
+
+// Which body's E, nu and density set c_t (BSHP96 (B3)), by the names the user gives them, and
+// whether E looks like a slip of unit: a small c_t is more often a wrong input (GPa typed as Pa)
+// than too fast a collision (issue 40, point 4).
+std::string sound_speed_inputs(const Pair& pair) {
+  const auto c_of = [](const Material& m) {
+    return transversal_sound_speed(m.youngs_modulus, m.poisson_ratio, m.density);  // BSHP96 (B3)
+  };
+  const bool second = !pair.body2().rigid && c_of(pair.body2().material) < c_of(pair.body1().material);
+  const Material& m = second ? pair.body2().material : pair.body1().material;
+  const std::string n = second ? "2" : "";
+  const std::string text = fmt::format(
+      "c_t = sqrt(E / (2 (1 + nu) density)) (BSHP96 (B3)) of body {}{}: E{} = {:g} Pa, nu{} = {:g}, density{} = {:g} "
+      "kg/m^3", second ? 2 : 1, m.name.empty() ? "" : " (" + m.name + ")", n, m.youngs_modulus, n, m.poisson_ratio, n,
+      m.density);
+  const std::string question = youngs_modulus_unit_question("E" + n, m.youngs_modulus);
+  return question.empty() ? text : text + "; " + question;
+}
 
 CollisionOutcome from_master(const Pair& pair, const models::Model& model, double velocity) {
   const ViscoelasticScales s = viscoelastic_scales(pair, model, velocity);
@@ -282,13 +301,35 @@ void require_impact_velocity(const Pair& pair, double velocity) {
   if (velocity > c_t) {
     throw InvalidArgument("velocity", format_value(velocity),
                           fmt::format("an impact velocity <= the transversal sound speed c_t = {:.4g} m/s, where the "
-                                      "quasi-static models end (BSHP96 (B11))", c_t));
+                                      "quasi-static models end (BSHP96 (B11)); {}",
+                                      c_t, sound_speed_inputs(pair)));
   }
   if (!std::isnormal(0.5 * pair.effective_mass() * velocity * velocity)) {
     throw InvalidArgument("velocity", format_value(velocity),
                           "an impact velocity whose kinetic energy (1/2) m_eff g^2 is > 0 in double precision");
   }
 }
+
+namespace {
+
+// BP04 (8.70) for a Hertz-type model. A so long (1e300 s, or T_vis / nu^2 with nu near 0) that
+// kappa overflows is an input no engine can take (the shifted and adhesive laws' states became
+// inf): refused naming A (issue 40, point 5). A = 0 is kappa = 0 (a huge E is no A's fault).
+double damping_kappa(const Pair& pair, const models::Model& model, double velocity) {
+  const double a = model.hertz->dissipative_constant;
+  if (a == 0.0) return 0.0;
+  const double kappa = analytic::kappa(a, model.hertz->force_constant, pair.effective_mass(), velocity);
+  if (!std::isfinite(kappa)) {
+    throw InvalidArgument("A", format_value(a),
+                          fmt::format("a dissipative constant (given, or T_vis / nu^2 by K13 after (18)) whose "
+                                      "dimensionless damping kappa (BP04 (8.70)) at g = {:g} m/s is finite in double "
+                                      "precision; the viscous models need A << the contact time (BSHP96 (B12))",
+                                      velocity));
+  }
+  return kappa;
+}
+
+}  // namespace
 
 ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& model, double velocity) {
   require_positive("velocity", velocity, "impact velocity [m/s]");
@@ -299,11 +340,7 @@ ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& mo
   s.dissipative_constant = model.hertz->dissipative_constant;
   s.force_constant = model.hertz->force_constant;
   const double m = pair.effective_mass();
-  s.kappa = analytic::kappa(s.dissipative_constant, s.force_constant, m, velocity);
-  if (!std::isfinite(s.kappa)) {
-    throw NumericalError(fmt::format("the dimensionless damping kappa (BP04 (8.70)) is {} for A = {:g} s and g = {:g} m/s: "
-                                     "outside double precision", format_value(s.kappa), s.dissipative_constant, velocity));
-  }
+  s.kappa = damping_kappa(pair, model, velocity);
   s.q = analytic::expansion_variable(s.kappa);
   s.characteristic_velocity = s.dissipative_constant > 0.0
                                   ? analytic::characteristic_velocity(s.dissipative_constant, s.force_constant, m)
@@ -315,6 +352,7 @@ ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& mo
 
 CollisionOutcome collide(const Pair& pair, const models::Model& model, double velocity, const CollideOptions& options) {
   require_impact_velocity(pair, velocity);
+  if (model.hertz) damping_kappa(pair, model, velocity);
   if (options.tangential_velocity > 0.0 && !model.tangential) {
     throw InvalidArgument("friction", "(not given)", "a friction coefficient mu >= 0 (BSHP96 (36))");
   }

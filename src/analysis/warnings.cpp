@@ -37,16 +37,15 @@ CollisionTime collision_time(const CollisionOutcome& out, const Pair& pair, doub
   return {out.contact_time, "the contact time"};
 }
 
-// Young's moduli of grain materials run from soft gels and rubbers (~1e4-1e6 Pa) to diamond
-// (1.2e12 Pa): a value outside 1e3-1.5e12 Pa is most likely in the wrong unit (MPa or GPa
-// typed as a number of Pa). Accepted (any E > 0 is a valid input), but said.
+// An E outside the range of grain materials is accepted (any E > 0 is valid) but said: it is
+// most likely in the wrong unit (pair/material.hpp).
 void add_material_warnings(CollisionOutcome& out, const Pair& pair) {
-  constexpr double lowest = 1e3, highest = 1.5e12;
   const auto check = [&](const char* body, const Material& m) {
-    if (m.youngs_modulus >= lowest && m.youngs_modulus <= highest) return;
+    if (plausible_youngs_modulus(m.youngs_modulus)) return;
     out.warnings.push_back(fmt::format("{} ({}): Young's modulus E = {:g} Pa is outside {:g}-{:g} Pa, the range of grain "
                                        "materials from soft gels to diamond: is it in the unit [Pa]?",
-                                       body, m.name.empty() ? "explicit" : m.name, m.youngs_modulus, lowest, highest));
+                                       body, m.name.empty() ? "explicit" : m.name, m.youngs_modulus,
+                                       plausible_youngs_modulus_min, plausible_youngs_modulus_max));
   };
   check("body1", pair.body1().material);
   if (!pair.body2().rigid) check("body2", pair.body2().material);
@@ -137,6 +136,25 @@ void add_tangential_warnings(CollisionOutcome& out) {
       std::abs(out.tangential->cor), out.tangential->stiffness_work));
 }
 
+// Far outside the viscous models (docs/models.md, "Validity"): they expand in A/t_c and T_vis/t_c
+// (BSHP96 (B12), K13 (A.2)); a viscous time as long as the elastic contact itself describes no
+// real collision (nu = 1e-6 made A = T_vis/nu^2 = 10 s). Said first, before any other warning.
+void add_far_outside_warning(CollisionOutcome& out, const Pair& pair, const models::Model& model, double velocity) {
+  const double t_h = contact::hertz::collision_time(pair.hertz_constant(), pair.effective_mass(), velocity);
+  const auto* crack = std::get_if<models::CrackContact>(&model.normal);
+  const double a = model.dissipative_constant.value_or(0.0);
+  const double tvis = crack ? crack->parameters.relaxation_time : 0.0;
+  const bool by_a = a >= tvis;
+  const double longest = std::max(a, tvis);
+  if (!(longest >= t_h) || !(t_h > 0.0)) return;
+  out.warnings.insert(out.warnings.begin(),
+                      fmt::format("far outside the model's validity: {} = {:.3g} s is {:.3g} times the elastic contact "
+                                  "time t_H = {:.3g} s, where the viscous models need A, T_vis << t_c (BSHP96 (B12), "
+                                  "K13 (A.2)){}: this result describes no real collision",
+                                  by_a ? "A" : "T_vis", longest, longest / t_h, t_h,
+                                  by_a ? "; A is the given one or T_vis / nu^2 (K13 after (18))" : ""));
+}
+
 }  // namespace
 
 void add_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& model, double velocity) {
@@ -150,6 +168,7 @@ void add_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& 
     add_adhesion_validity_warning(out, pair, velocity, adhesion == models::Adhesion::weak);
   }
   add_tangential_warnings(out);
+  add_far_outside_warning(out, pair, model, velocity);
 }
 
 }  // namespace bounce::analysis::detail

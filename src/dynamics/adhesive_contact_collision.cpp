@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "adhesive_outcome.hpp"
+#include "bounce/core/checks.hpp"
+#include "bounce/core/error.hpp"
 #include "bounce/dynamics/adhesive_collision.hpp"
 #include "event_integrator.hpp"
 #include "krijt_system.hpp"
@@ -20,7 +22,7 @@ using detail::Scales;
 using State = detail::State<3>;  // delta / L, rate / g, bulk dissipation / E0
 
 // The events of the collision (their ids).
-enum JkrEvent : int { max_compression, release, sticks, end_of_follow };
+enum JkrEvent : int { max_compression, release, sticks, end_of_follow, settled };
 
 class AdhesiveContactCollision {
  public:
@@ -33,6 +35,10 @@ class AdhesiveContactCollision {
  private:
   // The kinetic energy the pair would have at the release point, in E0, by the energy balance.
   double kinetic_at_release(const State& y) const;
+  // The mechanical energy above the branch's least, in E0: what the oscillation still holds.
+  double oscillation_energy(const State& y) const;
+  State settled_state(const State& y) const;
+  [[noreturn]] void refuse_follow(double reached) const;
   std::vector<detail::Event<3>> events(bool following) const;
   detail::IntegrationResult<3> go_on_after_follow(detail::IntegrationResult<3> followed, IntegrationSettings settings,
                                                   const detail::StepObserver<3>* observer) const;
@@ -48,6 +54,7 @@ class AdhesiveContactCollision {
   const Scales s_;
   const double delta_snap_, snap_release_, release_energy_, t_hertz_;
   const bool follow_;
+  double settle_energy_ = 0.0;  // in E0: below it a followed collision has settled
   CollisionOutcome out_;
   TrajectoryRecorder trajectory_{out_.trajectory, out_.trajectory_thinning};
 };
@@ -65,6 +72,9 @@ AdhesiveContactCollision::AdhesiveContactCollision(const models::KrijtParameters
       release_energy_(geometry.energy(delta_release_) / s_.energy),
       t_hertz_(detail::scaled_hertz_time(p, speed, s_)), follow_(options.follow_time > 0.0) {
   out_.method = "integrate";
+  // The integration's own resolution of the energy (its tolerance, relative to the larger of E0
+  // and |U_least|, integrate() below): an oscillation holding less is settled within it.
+  settle_energy_ = options.relative_tolerance * std::max(1.0, -geometry.least_energy() / s_.energy);
 }
 
 void AdhesiveContactCollision::operator()(const State& y, State& dydt, double) const {
@@ -88,6 +98,16 @@ double AdhesiveContactCollision::kinetic_at_release(const State& y) const {
   return 1.0 - snap_release_ / s_.energy - release_energy_ - y[2];
 }
 
+double AdhesiveContactCollision::oscillation_energy(const State& y) const {
+  return y[1] * y[1] + (geometry_.energy(y[0] * s_.length) - geometry_.least_energy()) / s_.energy;
+}
+
+// Settled: at rest at the equilibrium, the oscillation's last energy dissipated (the bulk force
+// takes all of it, however long that lasts), so the balance still closes.
+State AdhesiveContactCollision::settled_state(const State& y) const {
+  return {geometry_.equilibrium_overlap() / s_.length, 0.0, y[2] + oscillation_energy(y)};
+}
+
 std::vector<detail::Event<3>> AdhesiveContactCollision::events(bool following) const {
   std::vector<detail::Event<3>> e(3);
   e[0] = {max_compression, [](double, const State& y) { return y[1]; }, -1, false, true, -1};
@@ -96,6 +116,12 @@ std::vector<detail::Event<3>> AdhesiveContactCollision::events(bool following) c
   if (following) {  // the end of a followed collision, with the state there
     const double end = options_.follow_time / s_.time;
     e.push_back({end_of_follow, [end](double t, const State&) { return end - t; }, -1, true, true, -1});
+    // Damped about its equilibrium, a sticking pair settles long before a long followed time
+    // (--follow 1e3 s): dopri5 would need ~1e12 steps of the oscillation's period to get there,
+    // where krijt's stiff engine strides. Settled within the tolerance, the run ends: the state
+    // at the followed time is the equilibrium (issue 40, point 7).
+    e.push_back({settled, [this](double, const State& y) { return oscillation_energy(y) - settle_energy_; }, -1, true,
+                 true, -1});
   }
   return e;
 }
@@ -146,9 +172,36 @@ detail::IntegrationResult<3> AdhesiveContactCollision::integrate() {
     return bound;
   }
   auto e = events(follow_);
-  const detail::StepObserver<3>* watch = options_.record_trajectory ? &observer : nullptr;
-  auto result = detail::integrate_until_event<3>(*this, start, 0.0, 1e-4 * t_hertz_, settings, e, watch);
+  double reached = 0.0;  // where a followed run got to
+  const detail::StepObserver<3> followed = [&](double t0, double t1, const auto& at) {
+    reached = t1;
+    if (options_.record_trajectory) observer(t0, t1, at);
+  };
+  const detail::StepObserver<3>* watch = follow_ ? &followed : options_.record_trajectory ? &observer : nullptr;
+  detail::IntegrationResult<3> result;
+  try {
+    result = detail::integrate_until_event<3>(*this, start, 0.0, 1e-4 * t_hertz_, settings, e, watch);
+  } catch (const StepBudgetExceeded&) {
+    if (follow_) refuse_follow(reached);
+    throw;
+  }
+  if (result.terminal.id == settled) {  // held at the equilibrium until the followed time
+    out_.notes.push_back(fmt::format("settled at its equilibrium within the tolerance at {:.6g} s, and held there",
+                                     result.terminal.time * s_.time));
+    result.terminal = {settled, options_.follow_time / s_.time, settled_state(result.terminal.state)};
+  }
   return result.terminal.id == end_of_follow ? go_on_after_follow(std::move(result), settings, watch) : result;
+}
+
+// A followed pair that does not settle (A = 0 oscillates for ever; weak damping settles late) needs
+// every period of its oscillation up to the followed time: the step budget ends it, and the time
+// it reached is the bound the followed time can have.
+void AdhesiveContactCollision::refuse_follow(double reached) const {
+  throw InvalidArgument("follow", format_value(options_.follow_time),
+                        fmt::format("a follow time <= {:.3g} s: there the budget of {} steps ended with the grains' "
+                                    "oscillation about their equilibrium (bulk damping A = {:g} s) not yet settled "
+                                    "to the tolerance",
+                                    reached * s_.time, options_.max_steps, p_.dissipative_constant));
 }
 
 // The followed time has come: with sticking certain (the energy below the release energy,
@@ -183,7 +236,8 @@ void AdhesiveContactCollision::finish(const detail::IntegrationResult<3>& result
     }
   }
   out_.steps = result.steps;
-  out_.contact_time = result.terminal.time * s_.time;
+  // A settled run ends at the followed time itself (its scaled time times the unit rounds off).
+  out_.contact_time = result.terminal.id == settled ? options_.follow_time : result.terminal.time * s_.time;
   if (follow_ && result.terminal.id != release) {
     out_.notes.push_back(detail::followed_note(options_.follow_time, out_.contact_time));
   } else if (result.hits.empty()) {  // stopped before the maximum compression
@@ -207,6 +261,7 @@ void AdhesiveContactCollision::finish(const detail::IntegrationResult<3>& result
 // the jump off it (no contact, what it held released, the balance's rate).
 void AdhesiveContactCollision::record_end(double t, const State& end, bool bounced, double v) {
   if (out_.trajectory.empty() || out_.trajectory.back().time < t * s_.time) trajectory_.add_end(sample(t, end));
+  out_.trajectory.back().time = std::max(out_.trajectory.back().time, out_.contact_time);
   if (!bounced) return;
   TrajectorySample off = out_.trajectory.back();
   off.rate = v * s_.speed;

@@ -24,6 +24,7 @@ class JkrGeometry final : public AdhesiveGeometry {
   double elastic_energy(double delta) const override;
   double surface_energy(double delta) const override;
   double least_energy() const override;
+  double equilibrium_overlap() const override;
   double snap_overlap() const override { return 0.0; }
   double release_overlap(AdhesiveRelease release) const override;
 
@@ -49,6 +50,7 @@ class MaugisGeometry final : public AdhesiveGeometry {
   double surface_energy(double delta) const override;
   double elastic_energy(double delta) const override { return energy(delta) - surface_energy(delta); }
   double least_energy() const override;
+  double equilibrium_overlap() const override;
   double snap_overlap() const override { return branch_.snap_overlap() * scales_.overlap; }
   double release_overlap(AdhesiveRelease release) const override;
 

@@ -22,8 +22,9 @@ double JkrGeometry::elastic_energy(double delta) const {  // K13 (3)
 double JkrGeometry::surface_energy(double delta) const {  // K13 (6)
   return contact::independent::surface_energy(branch_.radius(delta), p_.surface_energy);
 }
-double JkrGeometry::least_energy() const {  // at zero force: a_eq of K13 (10), delta of K13 (8)
-  return energy(contact::jkr::overlap(p_, contact::jkr::equilibrium_contact_radius(p_)));
+double JkrGeometry::least_energy() const { return energy(equilibrium_overlap()); }
+double JkrGeometry::equilibrium_overlap() const {  // at zero force: a_eq of K13 (10), delta of K13 (8)
+  return contact::jkr::overlap(p_, contact::jkr::equilibrium_contact_radius(p_));
 }
 double JkrGeometry::release_overlap(AdhesiveRelease release) const {
   return release == AdhesiveRelease::pull_off ? contact::jkr::pull_off_overlap(p_) : contact::jkr::separation_overlap(p_);
@@ -51,6 +52,7 @@ double MaugisGeometry::surface_energy(double delta) const {
 double MaugisGeometry::least_energy() const {
   return branch_.energy_at_overlap(branch_.zero_force_overlap()) * energy_unit_;
 }
+double MaugisGeometry::equilibrium_overlap() const { return branch_.zero_force_overlap() * scales_.overlap; }
 double MaugisGeometry::release_overlap(AdhesiveRelease release) const {
   const contact::maugis::BranchPoint& p = release == AdhesiveRelease::pull_off ? branch_.pull_off() : branch_.fold();
   return p.overlap * scales_.overlap;

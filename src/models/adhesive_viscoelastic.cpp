@@ -57,6 +57,7 @@ class AdhesiveViscoelasticForce final : public NormalForceModel {
     return power_law_reference_overlap(p_.rho / p_.effective_mass, 1.5, speed);
   }
   bool adhesive() const override { return true; }
+  bool conservative() const override { return p_.a == 0.0 && p_.b == 0.0; }  // (8.57) vanishes
   double cutoff_overlap(double speed) const override { return p_.cutoff_fraction * reference_overlap(speed); }
 
  private:
@@ -66,7 +67,9 @@ class AdhesiveViscoelasticForce final : public NormalForceModel {
 // B of BP04 (8.57): given, from eta1, eta2 ((8.58) corrected: B = alpha beta =
 // (3 eta2 - eta1)(1 + nu)(1 - 2 nu) / (3 E nu), docs/adhesive.md), or A.
 double dissipative_constant_b(const Pair& pair, const AdhesiveViscousParameters& p, double a) {
-  if (p.dissipative_constant_b) return *p.dissipative_constant_b;
+  if (p.dissipative_constant_b) {  // bounded as A is (docs/models.md): B = 1e300 s made the state inf
+    return detail::require_short_viscous_time(pair, *p.dissipative_constant_b, "B", "a dissipative constant B [s]");
+  }
   if (p.shear_viscosity && p.bulk_viscosity) {
     const Material& m = pair.body1().material;
     const double nu = m.poisson_ratio;

@@ -44,6 +44,19 @@ double from_viscosities(const Pair& pair, const ViscousParameters& p) {
 }
 }  // namespace
 
+double shortest_contact_time(const Pair& pair) {  // BSHP96 (A13) at g = c_t
+  return contact::hertz::collision_time(pair.hertz_constant(), pair.effective_mass(), pair.transversal_sound_speed());
+}
+
+double require_short_viscous_time(const Pair& pair, double value, const std::string& name, const std::string& what) {
+  const double t_h = shortest_contact_time(pair);
+  if (value <= longest_viscous_time_ratio * t_h) return value;
+  throw InvalidArgument(name, format_value(value),
+                        fmt::format("{} <= {:.3g} s, {:g} times the shortest elastic contact time of the pair, t_H(c_t) = "
+                                    "{:.3g} s: the viscous models need it << the contact time (BSHP96 (B12))",
+                                    what, longest_viscous_time_ratio * t_h, longest_viscous_time_ratio, t_h));
+}
+
 double dissipative_constant(const Pair& pair, const ViscousParameters& p, std::string_view model) {
   const bool a = p.dissipative_constant.has_value(), tvis = p.relaxation_time.has_value();
   const bool viscosities = p.shear_viscosity || p.bulk_viscosity;
@@ -54,7 +67,7 @@ double dissipative_constant(const Pair& pair, const ViscousParameters& p, std::s
     throw InvalidArgument(second.first, format_value(second.second),
                           "one of A, the viscosities eta1 and eta2, or T_vis, not two");
   }
-  if (a) return *p.dissipative_constant;
+  if (a) return require_short_viscous_time(pair, *p.dissipative_constant, "A", "a dissipative constant A [s]");
   if (tvis) return krijt_dissipative_constant(*p.relaxation_time, pair);  // K13 after (18)
   if (viscosities) return from_viscosities(pair, p);
   throw InvalidArgument("A", "(not given)",
@@ -98,13 +111,14 @@ KrijtParameters contact_parameters(const Pair& pair, const ContactModelParameter
   out.effective_mass = pair.effective_mass();
   out.surface_energy = adhesive_surface_energy(pair, name);
   if (p.relaxation_time) {
-    out.relaxation_time = *p.relaxation_time;
+    out.relaxation_time = require_short_viscous_time(pair, *p.relaxation_time, "tvis", "a viscous relaxation time T_vis [s]");
   } else if (k || !p.dissipative_constant) {
     throw InvalidArgument("tvis", "(not given)",
                           fmt::format("a viscous relaxation time T_vis > 0 s (model {}{})", name, k ? "" : "; or A"));
   }
-  out.dissipative_constant = p.dissipative_constant ? *p.dissipative_constant
-                                                     : krijt_dissipative_constant(out.relaxation_time, pair);
+  out.dissipative_constant = p.dissipative_constant
+                                 ? require_short_viscous_time(pair, *p.dissipative_constant, "A", "a dissipative constant A [s]")
+                                 : krijt_dissipative_constant(out.relaxation_time, pair);
   out.z0 = p.z0;
   if (k) out.k = *k;
   return out;

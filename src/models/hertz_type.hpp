@@ -2,6 +2,7 @@
 // Private: what the Hertz-type models (hertz, viscoelastic, viscoelastic-shifted,
 // adhesive-viscoelastic) share: their dissipative constant, viscous time, geometry.
 
+#include <string>
 #include <string_view>
 
 #include "bounce/contact/convex.hpp"
@@ -46,6 +47,18 @@ class HertzTypeContact final : public ContactLaw {
  private:
   double modulus_, a_;
 };
+
+/// The longest viscous time a model takes, in units of the shortest elastic contact time: the
+/// Hertz time at the sound speed, t_H(c_t) (BSHP96 (A13) at g = c_t). Beyond it the time is
+/// more than ~1e4 contact times at every speed down to 1e-6 m/s (t_H grows as g^{-1/5}): no
+/// viscous model describes that collision (they need A, T_vis << t_c, BSHP96 (B12)), and the
+/// engines failed there (A = 1e300 s: RODAS step underflow, non-finite states). docs/models.md.
+inline constexpr double longest_viscous_time_ratio = 1e6;
+/// t_H(c_t) of the pair [s].
+double shortest_contact_time(const Pair& pair);
+/// `value` (A or T_vis, named `name` as the user types it) unless it exceeds
+/// longest_viscous_time_ratio t_H(c_t): then InvalidArgument naming it.
+double require_short_viscous_time(const Pair& pair, double value, const std::string& name, const std::string& what);
 
 /// A [s]: given, from eta1 and eta2 (BP04 (8.38), bodies of one material), or T_vis / nu^2
 /// (K13 after (18)); exactly one of these.

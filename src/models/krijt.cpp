@@ -13,6 +13,7 @@
 #include "bounce/contact/independent.hpp"
 #include "bounce/contact/jkr.hpp"
 #include "bounce/models/contact_law.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/pair/mixing.hpp"
 #include "bounce/models/crack.hpp"
@@ -36,12 +37,27 @@ double krijt_dissipative_constant(double relaxation_time, const Pair& pair) {  /
   const Material& m1 = pair.body1().material;
   const Material& m2 = pair.body2().material;
   double nu = m1.poisson_ratio;
+  bool second = false;
   if (!pair.body2().rigid) {
     const double c1 = (1.0 - m1.poisson_ratio * m1.poisson_ratio) / m1.youngs_modulus;
     const double c2 = (1.0 - m2.poisson_ratio * m2.poisson_ratio) / m2.youngs_modulus;
-    if (c2 > c1) nu = m2.poisson_ratio;
+    second = c2 > c1;
+    if (second) nu = m2.poisson_ratio;
   }
-  return relaxation_time / (nu * nu);
+  detail::require_short_viscous_time(pair, relaxation_time, "tvis", "a viscous relaxation time T_vis [s]");
+  const double a = relaxation_time / (nu * nu);
+  // nu = 0 (inside -1 < nu < 0.5) made A = inf and nu = 1e-6 A = 10 s, and the solvers failed in
+  // their own words or integrated nonsense (issue 40, point 5): refused naming both inputs.
+  const double longest = detail::longest_viscous_time_ratio * detail::shortest_contact_time(pair);
+  if (!(a <= longest)) {
+    throw InvalidArgument(second ? "nu2" : "nu", format_value(nu),
+                          fmt::format("|nu| >= {:.3g} with tvis = {:g} s: A = T_vis / nu^2 (K13 after (18)) is {} and "
+                                      "must stay <= {:g} t_H(c_t) = {:.3g} s like a given A (docs/models.md); or give A",
+                                      std::sqrt(relaxation_time / longest), relaxation_time,
+                                      std::isfinite(a) ? fmt::format("{:.3g} s", a) : "beyond double precision",
+                                      detail::longest_viscous_time_ratio, longest));
+  }
+  return a;
 }
 
 double effective_surface_energy_ratio(const KrijtParameters& p, double a, double delta) {  // K13 (14)

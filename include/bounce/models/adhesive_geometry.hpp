@@ -44,6 +44,8 @@ class AdhesiveGeometry {
   /// The least energy along the branch [J] (< 0), at its state of zero force: how much kinetic
   /// energy the attraction can give a collision beyond its impact energy.
   virtual double least_energy() const = 0;
+  /// The overlap of that state [m]: where a sticking pair settles.
+  virtual double equilibrium_overlap() const = 0;
 
   /// Where an approaching pair jumps onto the branch (<= 0).
   virtual double snap_overlap() const = 0;

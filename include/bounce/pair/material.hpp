@@ -22,6 +22,16 @@ struct Material {
   std::string source;               ///< where the values come from
 };
 
+/// Young's moduli of grain materials, from soft gels and rubbers (~1e4-1e6 Pa) to diamond
+/// (1.2e12 Pa): a value outside [1e3, 1.5e12] Pa is most likely in the wrong unit (MPa or GPa
+/// typed as a number of Pa). Any E > 0 is valid; this only decides when to ask.
+inline constexpr double plausible_youngs_modulus_min = 1e3;   ///< [Pa]
+inline constexpr double plausible_youngs_modulus_max = 1.5e12;  ///< [Pa]
+bool plausible_youngs_modulus(double youngs_modulus);
+/// "E = 70 Pa is outside 1e3-1.5e12 Pa, ...: is it in the unit [Pa] (70 GPa would be 7e+10 Pa)?"
+/// for an implausible E, naming it `name` ("E", "E2"); "" for a plausible one.
+std::string youngs_modulus_unit_question(std::string_view name, double youngs_modulus);
+
 /// Maps a field name ("E", "nu", "density", "gamma") to the name the user knows
 /// it by (an option such as "--nu2", or "water-ice.poisson_ratio" in a file).
 using FieldNamer = std::function<std::string(std::string_view field)>;
