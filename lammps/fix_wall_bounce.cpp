@@ -76,6 +76,7 @@ FixWallBounce::FixWallBounce(LAMMPS *instance, int narg, char **arg) : Fix(insta
   values_ = 1 + layout_.size();
   size_ = 2 * values_;
   restart_peratom = 1;
+  create_attribute = 1;  // atoms made after the fix (fix pour, deposit) start untouched: set_arrays
   FixWallBounce::grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
