@@ -219,15 +219,16 @@ run {steps}
 def test_too_large_a_step_is_reported():
     """A contact of a few steps (t_c = 9.7e-5 s at 1 m/s, dt = 2e-5 s: s ~ 0.6-0.85 of the explicit
     step's limit, docs/lammps.md) gives one WARNING naming the atoms; at dt = 3e-5 s it is past the
-    limit (s = 1.07 at 30 um) and stops LAMMPS; a step that makes the force infinite (A = 1e308)
-    stops LAMMPS naming the atoms; and so do two atoms at the same place."""
+    limit (s = 1.07 at 30 um) and stops LAMMPS; a force that overflows (A = 10 s at 1e307 m/s: A = 1e308
+    s, used before, is refused at pair_coeff now) stops LAMMPS naming the atoms; and so do two atoms
+    at the same place."""
     code, output = L.run_lammps(STEP.format(x=0.01, v=1.0, a=1e-5, dt=3e-5, steps=40, plugin=L.PLUGIN), check=False)
     errors = [line for line in output.splitlines() if line.startswith("ERROR")]
     assert code != 0 and errors and "time step is too long" in errors[0] and "atoms 1 and 2" in errors[0], output[-2000:]
     code, output = L.run_lammps(STEP.format(x=0.01, v=1.0, a=1e-5, dt=2e-5, steps=60, plugin=L.PLUGIN))
     warnings = [line for line in output.splitlines() if line.startswith("WARNING") and "coarse for the time step" in line]
     assert len(warnings) == 1 and ("atoms 1 and 2" in warnings[0] or "atoms 2 and 1" in warnings[0]), output[-2000:]
-    code, output = L.run_lammps(STEP.format(x=0.01, v=1.0, a=1e308, dt=1e-7, steps=100, plugin=L.PLUGIN), check=False)
+    code, output = L.run_lammps(STEP.format(x=0.0099, v=1e307, a=10, dt=1e-7, steps=1, plugin=L.PLUGIN), check=False)
     errors = [line for line in output.splitlines() if line.startswith("ERROR")]
     assert code != 0 and errors and "not finite" in errors[0], output[-2000:]
     code, output = L.run_lammps(STEP.format(x=-0.01, v=0.0, a=1e-5, dt=1e-7, steps=1, plugin=L.PLUGIN), check=False)
