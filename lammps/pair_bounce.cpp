@@ -148,7 +148,7 @@ void PairBounce::coeff(int narg, char **arg)
   }
   // One atom type is one material: a pair of a type with itself takes no body 2 of its own.
   if (std::max(ilo, jlo) <= std::min(ihi, jhi)) {
-    for (const char *key : {"material2", "E2", "nu2", "gamma2"})
+    for (const char *key : {"material2", "E2", "nu2", "gamma2", "surface_energy2"})
       if (coeffs.count(key))
         error->all(FLERR,
                    "pair_coeff {} {}: {} = {} is invalid: expected none for a type with itself (one type, one "

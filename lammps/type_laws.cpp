@@ -17,8 +17,8 @@ namespace bounce::lammps {
 namespace {
 
 // A body's material keys and body 2's names for them (bounce's pair parameters).
-constexpr std::array<std::pair<const char*, const char*>, 4> body_keys{
-    {{"material", "material2"}, {"E", "E2"}, {"nu", "nu2"}, {"gamma", "gamma2"}}};
+constexpr std::array<std::pair<const char*, const char*>, 5> body_keys{
+    {{"material", "material2"}, {"E", "E2"}, {"nu", "nu2"}, {"gamma", "gamma2"}, {"surface_energy", "surface_energy2"}}};
 
 bool is_body_key(const std::string& key) {
   for (const auto& [one, two] : body_keys)

@@ -121,7 +121,12 @@ std::string contact_text(const Record& out) {
 
 namespace {
 
-std::string value_line(const std::string& what, double value) { return fmt::format("  {:<44} {:.10f}\n", what, value); }
+// Ten significant digits (a COR of 2.2e-14 is not 0.0000000000); a null one is a divergent series.
+std::string value_line(const std::string& what, const Value& value) {
+  return value.is_null() ? fmt::format("  {:<44} diverges (below)\n", what)
+                         : fmt::format("  {:<44} {:.10g}\n", what, value.number());
+}
+std::string value_line(const std::string& what, double value) { return value_line(what, Value(value)); }
 
 std::string coefficients_line(const std::string& what, const Record& series) {
   std::string s = fmt::format("  {:<14}", what);
@@ -147,13 +152,15 @@ std::string analytic_text(const Record& out) {
   s += value_line("exact, force end rule (master curve)", num(exact, "force"));
   s += value_line("implicit equation BP04 (8.85)", num(out, "implicit_8_85"));
   s += value_line("continued fraction BP04 (8.86)", num(out, "continued_fraction_8_86"));
-  s += value_line("series (8.89), BP04 simple a_k", num(series, "bp04_simple"));
-  s += value_line("series (8.89), BP04 a3 = 0.315, a4 = 0.161", num(series, "bp04_rigorous"));
-  s += value_line("series (8.89), bounce a_k (overlap rule)", num(series, "bounce_overlap"));
-  s += value_line("series, bounce, force rule (+ kappa^5/2 terms)", num(series, "bounce_force"));
+  s += value_line("series (8.89), BP04 simple a_k", series.at("bp04_simple"));
+  s += value_line("series (8.89), BP04 a3 = 0.315, a4 = 0.161", series.at("bp04_rigorous"));
+  s += value_line("series (8.89), bounce a_k (overlap rule)", series.at("bounce_overlap"));
+  s += value_line("series, bounce, force rule (+ kappa^5/2 terms)", series.at("bounce_force"));
   s += value_line("Pade (8.92), BP04's printed d_k", num(pade, "bp04_printed"));
   s += value_line("Pade (8.92)-(8.93) from BP04's a_k", num(pade, "from_bp04_a_k"));
   s += value_line("Pade (8.92)-(8.93) from bounce's a_k", num(pade, "from_bounce_a_k"));
+  if (series.contains("warnings"))
+    for (const Value& w : series.at("warnings").list()) s += "  (" + w.text() + ")\n";
   s += "series coefficients a_k (e = 1 - a1 q + a2 q^2 - a3 q^3 + ...):\n";
   const Record& coefficients = out.at("coefficients").record();
   s += coefficients_line("BP04 simple", coefficients.at("bp04_simple").record());
@@ -199,6 +206,10 @@ std::string materials_text(const Value& materials) {
     s += fmt::format("{:<16} {:>10g} {:>6g} {:>8g} {:>11}  {}\n", str(m, "name"), num(m, "youngs_modulus") / 1e9,
                      num(m, "poisson_ratio"), num(m, "density"), gamma, str(m, "source"));
   }
+  // D2: which gamma this is, for users of the aggregate literature, which writes the per-surface one.
+  s += "\ngamma is the work of adhesion (K13's; 2 gamma_s of like surfaces). Dominik & Tielens 1997, Chokshi et al.\n"
+       "1993 and Wada et al. 2007 write gamma for the energy of one surface, gamma_s: give theirs as\n"
+       "--surface-energy (bounce then takes gamma = 2 gamma_s; unlike surfaces combine as 2 sqrt(gamma_s1 gamma_s2)).\n";
   return s;
 }
 

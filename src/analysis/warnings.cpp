@@ -41,10 +41,21 @@ CollisionTime collision_time(const CollisionOutcome& out, const Pair& pair, doub
 // most likely in the wrong unit (pair/material.hpp).
 void add_material_warnings(CollisionOutcome& out, const Pair& pair) {
   const auto check = [&](const char* body, const Material& m) {
+    const std::string name = m.name.empty() ? "explicit" : m.name;
+    // Densities of grains from aerogels to osmium; surface energies of solids below ~10 J/m^2 (K13
+    // table 2: 0.014-1.6): outside, a unit slip is likelier (g/cm^3, erg/cm^2 = mJ/m^2).
+    if (m.density < 10.0 || m.density > 3e4)
+      out.warnings.push_back(fmt::format("{} ({}): density = {:g} kg/m^3 is outside 10-30000 kg/m^3, the range of grain "
+                                         "materials: is it in the unit [kg/m^3] ({:g} g/cm^3 would be {:g} kg/m^3)?",
+                                         body, name, m.density, m.density, m.density * 1e3));
+    if (m.surface_energy && *m.surface_energy > 10.0)
+      out.warnings.push_back(fmt::format("{} ({}): gamma = {:g} J/m^2 is above 10 J/m^2, beyond the surface energies of "
+                                         "solids: is it in the unit [J/m^2] ({:g} erg/cm^2 = mJ/m^2 would be {:g} J/m^2)?",
+                                         body, name, *m.surface_energy, *m.surface_energy, *m.surface_energy * 1e-3));
     if (plausible_youngs_modulus(m.youngs_modulus)) return;
     out.warnings.push_back(fmt::format("{} ({}): Young's modulus E = {:g} Pa is outside {:g}-{:g} Pa, the range of grain "
                                        "materials from soft gels to diamond: is it in the unit [Pa]?",
-                                       body, m.name.empty() ? "explicit" : m.name, m.youngs_modulus,
+                                       body, name, m.youngs_modulus,
                                        plausible_youngs_modulus_min, plausible_youngs_modulus_max));
   };
   check("body1", pair.body1().material);

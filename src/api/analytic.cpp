@@ -32,16 +32,45 @@ void check(const Case& c, const analysis::ViscoelasticScales& s) {
   }
 }
 
+// The ratio test's radius of convergence of BP04 (8.89) from its last two coefficients, a_{n-1}/a_n:
+// beyond it the truncated series' terms grow, and its value is no COR (4.29, 1.96 and 1.73 for
+// BP04's simple, BP04's rigorous and bounce's a_k).
+double radius_of_convergence(const analytic::IntegerSeries& s) {
+  const std::size_t n = s.a.size();
+  return s.a[n - 2] / s.a[n - 1];
+}
+
+// BP04 (8.89) at q, or null with a warning where q is beyond the series' radius of convergence or
+// the truncated sum leaves [0, 1].
+Value series_value(const char* name, double value, double q, double radius, Value::List& warnings) {
+  if (q < radius && value >= 0.0 && value <= 1.0) return value;
+  warnings.emplace_back(fmt::format(
+      "series (8.89) {} is not a coefficient of restitution at q = {:.4g}: {} (an expansion in small q; the Pade "
+      "(8.92) and the exact master curve hold at every q)",
+      name, q,
+      q >= radius ? fmt::format("q >= {:.3g}, its radius of convergence by the ratio test (a_{{n-1}}/a_n)", radius)
+                  : fmt::format("its sum {:.4g} is outside [0, 1]", value)));
+  return Value();
+}
+
 Record series_values(double k, double q) {
   const auto bp04_simple = analytic::bp04_simple_series();
   const auto bp04_rigorous = analytic::bp04_rigorous_series();
   const auto ours = analytic::master_series_overlap();
   const auto force_correction = analytic::master_series_force_correction();
-  return Record()
-      .set("bp04_simple", analytic::cor_series(q, bp04_simple))
-      .set("bp04_rigorous", analytic::cor_series(q, bp04_rigorous))
-      .set("bounce_overlap", analytic::cor_series(q, ours))
-      .set("bounce_force", analytic::cor_series_force(k, ours, force_correction));
+  Value::List warnings;
+  Record r;
+  r.set("bp04_simple", series_value("with BP04's simple a_k", analytic::cor_series(q, bp04_simple), q,
+                                    radius_of_convergence(bp04_simple), warnings))
+      .set("bp04_rigorous", series_value("with BP04's a3 = 0.315, a4 = 0.161", analytic::cor_series(q, bp04_rigorous),
+                                         q, radius_of_convergence(bp04_rigorous), warnings))
+      .set("bounce_overlap", series_value("with bounce's a_k", analytic::cor_series(q, ours), q,
+                                          radius_of_convergence(ours), warnings))
+      .set("bounce_force", series_value("with bounce's a_k, force rule",
+                                        analytic::cor_series_force(k, ours, force_correction), q,
+                                        radius_of_convergence(ours), warnings));
+  if (!warnings.empty()) r.set("warnings", Value(std::move(warnings)));
+  return r;
 }
 
 Record coefficients() {

@@ -91,7 +91,8 @@ Record traits_record(const models::ModelRow& row) {
 Value materials(const Inputs& inputs) {
   const Parameters p = bind_parameters(command("materials").parameters, inputs, "bounce materials");
   const MaterialTable table =
-      p.given("materials_file") ? MaterialTable::from_file(p.text("materials_file")) : MaterialTable::builtin();
+      p.given("materials_file") ? MaterialTable::builtin().with(MaterialTable::from_file(p.text("materials_file")))
+                                : MaterialTable::builtin();
   Value::List out;
   for (const Material& m : table.materials()) out.push_back(table_entry(m));
   return out;

@@ -154,6 +154,16 @@ const Material& MaterialTable::at(std::string_view name) const {
   throw InvalidArgument("material", std::string(name), "one of " + join(names()) + did_you_mean(name, names()));
 }
 
+MaterialTable MaterialTable::with(const MaterialTable& user) const {
+  MaterialTable out = *this;
+  for (const Material& m : user.materials_) {
+    auto same = std::find_if(out.materials_.begin(), out.materials_.end(), [&](const Material& o) { return o.name == m.name; });
+    if (same != out.materials_.end()) *same = m;
+    else out.materials_.push_back(m);
+  }
+  return out;
+}
+
 std::vector<std::string> MaterialTable::names() const {
   std::vector<std::string> out;
   out.reserve(materials_.size());

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/pair/materials_table.hpp"
 
@@ -27,11 +28,18 @@ void add_body(std::vector<ParameterSpec>& out, const std::string& n) {
   // adhesion work W0 of BP04 (8.95) in a warning (found by the CLI fuzzer).
   const Range surface_energy{0.0, 1e3, true, true, false};
   ParameterSpec gamma = real_parameter("gamma" + n, "surface energy gamma", "J/m^2", surface_energy,
-                                       which + " surface energy (work of adhesion) [J/m^2]" + note);
+                                       which + " work of adhesion gamma = 2 gamma_s of like surfaces [J/m^2] (K13's; "
+                                       "for a per-surface energy, as Dominik & Tielens 1997 and Wada et al. 2007 give "
+                                       "it, use --surface-energy" + n + ")" + note);
   // `bounce fit` fits the pair's gamma (both bodies get the trial value): K13 Fig 7 (a)
   // finds gamma / gamma_L from about 0.3 to 30.
   if (n.empty()) gamma = fittable(std::move(gamma), {0.1, 100.0, 60, "gamma_L"});
   out.push_back(std::move(gamma));
+  out.push_back(real_parameter("surface_energy" + n, "surface energy per surface gamma_s", "J/m^2",
+                               Range{0.0, 500.0, true, true, false},
+                               which + " surface energy of one surface gamma_s [J/m^2] (the aggregate literature's "
+                               "gamma): bounce's gamma is 2 gamma_s, and unlike surfaces combine as 2 sqrt(gamma_s1 "
+                               "gamma_s2)" + note));
   out.push_back(real_parameter("radius" + n, "radius", "m", positive(),
                                n.empty() ? "body 1 radius [m]" : "body 2 radius [m] (default: body 1's)"));
   // Mass inside a ball of radius R has J <= m R^2 about any axis through its centre.
@@ -45,7 +53,9 @@ std::vector<ParameterSpec> make_specs() {
   add_body(out, "2");
   out.push_back(flag_parameter("wall", "body 2 is a flat elastic wall (of body 2's material)"));
   out.push_back(flag_parameter("rigid_wall", "body 2 is a flat, ideally rigid wall"));
-  out.push_back(text_parameter("materials_file", "TOML materials table to use instead of the built-in one", "FILE"));
+  out.push_back(text_parameter("materials_file",
+                                "TOML materials added to the built-in table (an entry replaces the built-in one of its name)",
+                                "FILE"));
   return out;
 }
 
@@ -76,7 +86,14 @@ Material resolve_material(const Parameters& p, const MaterialTable& table, const
   take("nu", m.poisson_ratio);
   take("density", m.density);
   if (p.given("gamma" + n)) m.surface_energy = *p.real("gamma" + n);
-  const bool overridden = p.given("E" + n) || p.given("nu" + n) || p.given("density" + n) || p.given("gamma" + n);
+  if (p.given("surface_energy" + n)) {  // D2: the work of adhesion of like surfaces is twice the surface energy
+    if (p.given("gamma" + n))
+      throw InvalidArgument("gamma" + n, format_value(*p.real("gamma" + n)),
+                            fmt::format("gamma{0} or surface_energy{0}, not both (gamma{0} = 2 surface_energy{0})", n));
+    m.surface_energy = 2.0 * *p.real("surface_energy" + n);
+  }
+  const bool overridden = p.given("E" + n) || p.given("nu" + n) || p.given("density" + n) || p.given("gamma" + n) ||
+                          p.given("surface_energy" + n);
   if (overridden && !m.name.empty()) m.name += " (modified)";
   return m;
 }
@@ -106,7 +123,8 @@ std::span<const ParameterSpec> pair_parameters() {
 
 Pair make_pair(const Parameters& p, std::optional<double> radius) {
   const MaterialTable table =
-      p.given("materials_file") ? MaterialTable::from_file(p.text("materials_file")) : MaterialTable::builtin();
+      p.given("materials_file") ? MaterialTable::builtin().with(MaterialTable::from_file(p.text("materials_file")))
+                                : MaterialTable::builtin();
   const Material m1 = resolve_material(p, table, "", nullptr);
   const Material m2 = resolve_material(p, table, "2", &m1);
   if (radius) p.refuse_given(std::array{"radius"}, "none with a sweep over radii (the sweep sets body 1's radius)");

@@ -21,6 +21,10 @@ class MaterialTable {
   /// Same as from_file, for text already in memory; `origin` names it in errors.
   static MaterialTable from_toml(std::string_view text, std::string_view origin);
 
+  /// This table with a user's added: an entry of `user` replaces the one of the same name, the
+  /// others are appended (what --materials-file does to the built-in table).
+  MaterialTable with(const MaterialTable& user) const;
+
   /// The material called `name`; throws InvalidArgument("material", name, "one of …").
   const Material& at(std::string_view name) const;
   bool contains(std::string_view name) const;
