@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -180,6 +181,40 @@ namespace bounce::cli {
 
 void exit_on_interrupt() { install_interrupt_handler(); }
 
+namespace {
+
+// CLI11's parse, its help and version exits, and its errors in the one-line rule (exit 2);
+// nothing where the command is to run.
+std::optional<int> parse(CLI::App& app, int argc, const char* const* argv, const std::vector<Command>& commands,
+                         const std::vector<std::string>& names) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ExtrasError&) {
+    std::vector<const CLI::App*> apps;  // every command's, `atlas build` and its kin included
+    for (const Command& c : commands) apps.push_back(c.app);
+    std::cerr << "bounce: error: " << unexpected_argument(app, apps) << '\n';
+    return 2;
+  } catch (const CLI::RequiredError&) {
+    std::cerr << "bounce: error: " << missing_command(app, argc, argv, names) << '\n';
+    return 2;
+  } catch (const CLI::ArgumentMismatch& e) {
+    std::cerr << "bounce: error: " << missing_value(e) << '\n';
+    return 2;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "bounce: error: " << e.what() << '\n';
+    return 2;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 int run(int argc, const char* const* argv) {
   CLI::App app{"bounce: will two adhesive, viscoelastic spheres bounce or stick?", "bounce"};
   app.formatter(std::make_shared<ExamplesFormatter>());  // before the commands, which inherit it
@@ -209,29 +244,7 @@ int run(int argc, const char* const* argv) {
     std::cerr << "bounce: error: " << refused << '\n';
     return 2;
   }
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ExtrasError&) {
-    std::vector<const CLI::App*> apps;  // every command's, `atlas build` and its kin included
-    for (const Command& c : commands) apps.push_back(c.app);
-    std::cerr << "bounce: error: " << unexpected_argument(app, apps) << '\n';
-    return 2;
-  } catch (const CLI::RequiredError&) {
-    std::cerr << "bounce: error: " << missing_command(app, argc, argv, names) << '\n';
-    return 2;
-  } catch (const CLI::ArgumentMismatch& e) {
-    std::cerr << "bounce: error: " << missing_value(e) << '\n';
-    return 2;
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "bounce: error: " << e.what() << '\n';
-    return 2;
-  }
+  if (const std::optional<int> code = parse(app, argc, argv, commands, names)) return *code;
   for (const Command& command : commands) {
     if (!command.app->parsed()) continue;
     if (const std::string missing = needs(*command.app, argc); !missing.empty()) {
