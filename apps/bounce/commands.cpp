@@ -13,6 +13,7 @@
 #include "batch.hpp"
 #include "interrupt.hpp"
 #include "output.hpp"
+#include "plot.hpp"
 #include "stream.hpp"
 #include "text.hpp"
 
@@ -305,11 +306,15 @@ std::function<int()> fit(Options& o) {
       "columns", "the file's names of the columns, e.g. velocity=Speed,cor=e,cor_error=sigma (with --data)", "MAP");
   const std::string* batch = o.add_text("batch", "TOML manifest of experiments to fit (mpirun -np N: over N ranks)", "FILE");
   const std::string* checkpoint = o.add_text("checkpoint", "with --batch: keep finished grid blocks in DIR, reuse them", "DIR");
+  const std::string* plot = o.add_text(
+      "plot", "also write the fit's figure (K13 Fig 6) to FILE.png, .svg or .pdf (drawn by /usr/bin/python3 with "
+              "matplotlib)", "FILE");
   const bool* json = o.add_flag("json", "print JSON");
   const bool* progress = o.add_flag("progress", "report progress on stderr (automatic on a terminal)");
-  return [&o, data, columns, batch, checkpoint, json, progress] {
+  return [&o, data, columns, batch, checkpoint, plot, json, progress] {
     if (o.given("batch")) {
       if (o.given("columns")) throw InvalidArgument("columns", *columns, "--data with it (a manifest's experiment has its own columns key)");
+      if (o.given("plot")) throw InvalidArgument("plot", *plot, "--data with it (one fit's figure; a batch: bounce.plot.batch_summary)");
       return fit_batch(o, *batch, checkpoint, *json, *progress);
     }
     if (o.given("checkpoint")) throw InvalidArgument("checkpoint", *checkpoint, "--batch with it (a batch's blocks)");
@@ -321,9 +326,11 @@ std::function<int()> fit(Options& o) {
     if (!*json && o.inputs().count("chi2_grid")) {
       throw InvalidArgument("chi2_grid", "given", "--json with it (the whole chi^2 grid is printed as JSON only)");
     }
+    if (o.given("plot")) check_plot(*plot);  // before a fit of minutes
     Progress report("bounce fit", *progress);
     const Record out = api::fit(o.inputs(), experiment, std::ref(report));
     *json ? print_json(out) : print_text(out, fit_text(out));
+    if (o.given("plot")) write_plot(*plot, to_json(out).dump());
     return 0;
   };
 }

@@ -223,13 +223,36 @@ std::string table_value_text(const Record& r) {
 
 namespace {
 
-std::string range_text(const Value& range) {
+// "0.5 J/m^2": a value with its unit (none for a dimensionless one).
+std::string with_unit(double x, const std::string& unit, const char* form = "{:.4g}") {
+  const std::string v = fmt::format(fmt::runtime(form), x);
+  return unit.empty() ? v : v + " " + unit;
+}
+
+std::string range_text(const Value& range, const std::string& unit) {
   const auto& ends = range.list();
-  auto end = [](const Value& v, const char* open) { return v.is_null() ? std::string(open) : fmt::format("{:.4g}", v.number()); };
+  auto end = [&](const Value& v) { return with_unit(v.number(), unit); };
   if (ends[0].is_null() && ends[1].is_null()) return "unconstrained on the grid";
-  if (ends[0].is_null()) return fmt::format("< {} (the grid's lower edge is inside)", end(ends[1], ""));
-  if (ends[1].is_null()) return fmt::format("> {} (a lower limit: the grid's upper edge is inside)", end(ends[0], ""));
-  return fmt::format("{} .. {}", end(ends[0], ""), end(ends[1], ""));
+  if (ends[0].is_null()) return fmt::format("< {} (the grid's lower edge is inside)", end(ends[1]));
+  if (ends[1].is_null()) return fmt::format("> {} (a lower limit: the grid's upper edge is inside)", end(ends[0]));
+  return fmt::format("{} .. {}", fmt::format("{:.4g}", ends[0].number()), end(ends[1]));
+}
+
+// A parameter's unit and grid edge as the Record gives them ("" and "" where it has none).
+std::string field_of(const Record& f, const char* key, const std::string& name) {
+  if (!f.contains(key) || !f.at(key).record().contains(name)) return {};
+  return f.at(key).record().at(name).text();
+}
+
+// "gamma = 0.0994 J/m^2 (on the grid's lower edge: a limit)", or ">= 1e9 Pa (a lower limit)".
+std::string best_text(const Record& f, const Value& best, const std::string& name, const char* form, bool edges = true) {
+  const std::string unit = field_of(f, "units", name);
+  if (best.is_null() && f.contains("lower_limits") && f.at("lower_limits").record().contains(name)) {
+    return fmt::format(">= {} (a lower limit: the data do not determine it)",
+                       with_unit(f.at("lower_limits").record().at(name).number(), unit));
+  }
+  const std::string edge = edges ? field_of(f, "grid_edges", name) : std::string();
+  return with_unit(best.number(), unit, form) + (edge.empty() ? "" : " (on the grid's " + edge + " edge: a limit)");
 }
 
 // A parameter the data do not determine has no best value (null) but a lower limit.
@@ -238,12 +261,24 @@ std::string fitted_lines(const Record& f, const char* best_key, const char* rang
   for (const Value& name : f.at("fitted").list()) {
     const std::string& n = name.text();
     const Value& best = f.at(best_key).record().at(n);
-    if (best.is_null() && f.contains("lower_limits") && f.at("lower_limits").record().contains(n)) {
-      s += fmt::format("  {:<8} >= {:<11.4g} (a lower limit: the data do not determine it)\n", n,
-                       f.at("lower_limits").record().at(n).number());
+    if (best.is_null()) {
+      s += fmt::format("  {:<8} {}\n", n, best_text(f, best, n, "{:.4g}", false));
       continue;
     }
-    s += fmt::format("  {:<8} = {:<12.6g} range {}\n", n, best.number(), range_text(f.at(range_key).record().at(n)));
+    // The grid's edges are the best's (K13 (31)); the weighted best's intervals say their own.
+    s += fmt::format("  {:<8} = {:<22} range {}\n", n, best_text(f, best, n, "{:.6g}", best_key == std::string("best")),
+                     range_text(f.at(range_key).record().at(n), field_of(f, "units", n)));
+  }
+  return s;
+}
+
+// A comparison row's best values with their units, on one line.
+std::string comparison_best(const Record& c) {
+  std::string s;
+  for (const Value& name : c.at("fitted").list()) {
+    const std::string& n = name.text();
+    s += fmt::format("{}{} {}{}", s.empty() ? "" : ", ", n, c.at("best").record().at(n).is_null() ? "" : "= ",
+                     best_text(c, c.at("best").record().at(n), n, "{:.4g}"));
   }
   return s;
 }
@@ -277,8 +312,8 @@ std::string fit_text(const Record& f) {
     s += "comparison (lowest AIC first is best):\n";
     for (const Value& row : f.at("comparison").list()) {
       const Record& c = row.record();
-      s += fmt::format("  {:<52} chi2 {:<11.4g} AIC {:<10.5g} BIC {:<10.5g}\n", str(c, "label"), num(c, "chi2"),
-                       num(c, "aic"), num(c, "bic"));
+      s += fmt::format("  {:<52} chi2 {:<11.4g} AIC {:<10.5g} BIC {:<10.5g}\n      {}\n", str(c, "label"), num(c, "chi2"),
+                       num(c, "aic"), num(c, "bic"), comparison_best(c));
     }
   }
   s += timing_lines(f);

@@ -16,27 +16,56 @@ def _axes(ax: Axes | None) -> Axes:
     return ax if ax is not None else Figure(figsize=(6.4, 4.4), layout="constrained").add_subplot()
 
 
+def _with_unit(x: float, unit: str) -> str:
+    return f"{x:.3g} {_tex_unit(unit)}" if unit else f"{x:.3g}"
+
+
+def _tex_unit(unit: str) -> str:
+    """The registry's "J/m^2" as mathtext (J/m$^2$); "s" and "Pa" as they are."""
+    return unit.replace("^2", "$^2$").replace("^3", "$^3$")
+
+
+def best_text(result: dict) -> str:
+    """``gamma = 0.0994 J/m², yield >= 1e9 Pa``: the best values with their units; a value on
+    its grid's edge (``grid_edges``) is marked as the limit it is."""
+    units, edges = result.get("units", {}), result.get("grid_edges", {})
+    limits = result.get("lower_limits", {})  # a parameter the data do not determine: a lower limit
+    parts = []
+    for k, x in result["best"].items():
+        u = units.get(k, "")
+        text = f"{k} = {_with_unit(x, u)}" if x is not None else f"{k} >= {_with_unit(limits[k], u)}"
+        parts.append(text + (f" (grid's {edges[k]} edge)" if k in edges else ""))
+    return ", ".join(parts)
+
+
+def _drawable(values) -> np.ndarray | None:
+    """A column as floats, or None where no value is finite (None and NaN are missing): a
+    legend lists only what is drawn."""
+    a = np.array([np.nan if x is None else x for x in np.asarray(values, dtype=object)], float)
+    return a if np.any(np.isfinite(a)) else None
+
+
 def fit_curve(result: dict, ax: Axes | None = None, title: str | None = None) -> Axes:
     """K13 Fig 6: the measured COR (with error bars where the data have them; sticking
     collisions at 0), the best fit e of K13 (30), JKR theory (24) at the fitted gamma
-    (dashed, adhesive models) and the plastic part e_P (29) (dotted, when Y is fitted).
+    (dashed, adhesive models with a surface energy) and the plastic part e_P (29) (dotted,
+    when Y is fitted). Each curve is drawn, and in the legend, only where it has values.
     """
     ax = _axes(ax)
     points, curve = result["points"], result["curve"]
     v, e = np.asarray(points["velocity"], float), np.asarray(points["cor"], float)
-    errors = np.asarray(points["cor_error"], dtype=object)
-    if all(x is not None and not (isinstance(x, float) and np.isnan(x)) for x in errors):
-        ax.errorbar(v, e, yerr=errors.astype(float), fmt="o", ms=4, color="k", label="data")
+    errors = _drawable(points["cor_error"])
+    if errors is not None and np.all(np.isfinite(errors)):
+        ax.errorbar(v, e, yerr=errors, fmt="o", ms=4, color="k", label="data")
     else:
         ax.plot(v, e, "o", ms=4, color="k", label="data")
-    limits = result.get("lower_limits", {})  # a parameter the data do not determine: a lower limit
-    best = ", ".join(f"{k} = {x:.3g}" if x is not None else f"{k} >= {limits[k]:.3g}" for k, x in result["best"].items())
-    ax.plot(curve["velocity"], curve["cor"], color="C3", label=f"{result['model']}: {best}")
-    jkr = np.asarray(curve["cor_jkr"], dtype=object)
-    if all(x is not None for x in jkr):
-        ax.plot(curve["velocity"], jkr.astype(float), "--", color="C0", label="JKR (24) at the fitted $\\gamma$")
-    if result["best"].get("yield") is not None:
-        ax.plot(curve["velocity"], curve["cor_plastic"], ":", color="C2", label="plastic $e_P$ (29)")
+    ax.plot(curve["velocity"], curve["cor"], color="C3", label=f"{result['model']}: {best_text(result)}")
+    jkr = _drawable(curve["cor_jkr"])
+    if jkr is not None:
+        ax.plot(curve["velocity"], jkr, "--", color="C0", label="JKR (24) at the fitted $\\gamma$")
+    plastic = _drawable(curve["cor_plastic"])
+    if result["best"].get("yield") is not None and plastic is not None:
+        ax.plot(curve["velocity"], plastic, ":", color="C2", label="plastic $e_P$ (29)")
     ax.set_xscale("log")
     ax.set_ylim(0, 1.05)
     ax.set_xlabel(r"impact velocity $v_{in}$ [m s$^{-1}$]")
@@ -46,9 +75,30 @@ def fit_curve(result: dict, ax: Axes | None = None, title: str | None = None) ->
     return ax
 
 
+# The smallest factor-2 region drawn as a contour: 2 % of an axis's log span (about the best
+# fit's 10-point marker on a 6.4 x 4.4 inch figure); a smaller one would be an invisible loop.
+VISIBLE_FRACTION = 0.02
+
+
+def _visible_contour(ax: Axes, xs: np.ndarray, ys: np.ndarray, plane: np.ndarray, level: float) -> bool:
+    """The factor-2 contour of K13 §4.1 in white, drawn when the region holds two grid values
+    or more and spans VISIBLE_FRACTION of an axis; False when it is not drawn."""
+    inside = np.isfinite(plane) & (plane <= level)
+    if inside.sum() < 2 or min(len(xs), len(ys)) < 2:
+        return False
+    rows, cols = np.nonzero(inside)
+    span_x = np.log10(xs[cols.max()] / xs[cols.min()]) / np.log10(xs[-1] / xs[0])
+    span_y = np.log10(ys[rows.max()] / ys[rows.min()]) / np.log10(ys[-1] / ys[0])
+    if max(span_x, span_y) < VISIBLE_FRACTION:
+        return False
+    ax.contour(xs, ys, plane, levels=[level], colors="w", linewidths=1.2)
+    return True
+
+
 def chi2_map(result: dict, x: str = "gamma", y: str = "tvis", ax: Axes | None = None) -> Axes:
     """The chi^2 (31) landscape over two fitted parameters (log axes), minimised over the
-    others, with the factor-2 contour of K13 §4.1 and the best fit marked.
+    others, with the factor-2 contour of K13 §4.1 (where it is large enough to see) and the
+    best fit marked.
     """
     names = list(result["fitted"])
     for n in (x, y):
@@ -65,11 +115,11 @@ def chi2_map(result: dict, x: str = "gamma", y: str = "tvis", ax: Axes | None = 
     ax = _axes(ax)
     mesh = ax.pcolormesh(xs, ys, np.log10(plane), shading="nearest", cmap="viridis")
     ax.figure.colorbar(mesh, ax=ax, label=r"$\log_{10}\chi^2$")
-    level = 2.0 * result["chi2"]
     label = "best fit"
-    if np.nanmin(plane) <= level:  # else the factor-2 region lies between grid values
-        ax.contour(xs, ys, plane, levels=[level], colors="w", linewidths=1.2)
+    if _visible_contour(ax, xs, ys, plane, 2.0 * result["chi2"]):
         label += r"; white: $\chi^2 = 2\chi^2_{min}$"
+    else:
+        label += r" ($\chi^2 \leq 2\chi^2_{min}$: too small to draw on this grid)"
     best = [result["best"][n] if result["best"][n] is not None else result["lower_limits"][n] for n in (x, y)]
     ax.plot(*best, "r*", ms=10, label=label)
     ax.set_xscale("log")

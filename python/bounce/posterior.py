@@ -33,8 +33,9 @@ def _whole(name: str, value: object, least: int) -> int:
     return int(value)
 
 
-def _grid(priors: Mapping | None, names: list[str]) -> dict | None:
-    """The priors as the fit's grid {name: (lo, hi, 2)}: the front door checks each range."""
+def _grid(priors: Mapping | None, names: list[str], defaults: list) -> dict | None:
+    """The priors as the fit's grid {name: (lo, hi, 2)}: the front door checks each range; a
+    yield strength's ends at most at the default prior's 0.2 E_soft (the theoretical bound)."""
     if priors is None:
         return None
     if not isinstance(priors, Mapping):
@@ -50,6 +51,10 @@ def _grid(priors: Mapping | None, names: list[str]) -> dict | None:
             raise TypeError(f"priors[{name}] = {bounds!r} is invalid: expected (lo, hi), two numbers") from None
         if not (0.0 < lo < hi < math.inf):
             raise _invalid(f"priors[{name}]", (lo, hi), "0 < lo < hi, finite (a log-uniform prior)")
+        bound = defaults[names.index(key)][1]
+        if key == "yield" and hi > bound * (1.0 + 1e-12):  # 1e-12: the bound's round-off, as computed in C++
+            raise _invalid(f"priors[{name}]", (lo, hi), f"hi <= 0.2 E_soft = {bound:.4g} Pa, the theoretical yield "
+                           "strength (K13 Fig 7 (b); docs/fitting.md)")
         grid[key] = (lo, hi, 2)
     return grid
 
@@ -101,7 +106,8 @@ def posterior(pair: b.Pair, model: b.Model, velocity=None, cor=None, *, cor_erro
     The data as for :func:`bounce.fit`: arrays ``velocity`` [m/s] and ``cor`` (0: stuck),
     optionally ``cor_error``, or ``data='file.csv'``. ``fit``: the parameters (default the
     model's, as fit's). ``priors``: {name: (lo, hi)} log-uniform priors in SI units (default: the
-    fit's default grid ranges). The likelihood is K13 (31)'s residuals as Gaussian errors: with
+    fit's default grid ranges, the yield strength's up to the theoretical 0.2 E_soft). The
+    likelihood is K13 (31)'s residuals as Gaussian errors: with
     ``cor_error`` their sigmas, without one sigma marginalised (Jeffreys' prior). ``walkers``
     (default 8 per parameter, at least 16, even) run ``steps`` moves (default 1500) of emcee's
     stretch move in log10 of the parameters; ``seed`` makes the run reproducible whatever
@@ -119,7 +125,7 @@ def posterior(pair: b.Pair, model: b.Model, velocity=None, cor=None, *, cor_erro
     fit_names = fit
     likelihood = b._likelihood(pair, model, velocity, cor, cor_error=cor_error, data=data, fit=fit_names)
     names = list(likelihood.names)
-    grid = _grid(priors, names)
+    grid = _grid(priors, names, list(likelihood.ranges))
     if grid is not None:  # the priors, checked by the fit's rules for its grids
         likelihood = b._likelihood(pair, model, velocity, cor, cor_error=cor_error, data=data, fit=fit_names,
                                    grid=grid)

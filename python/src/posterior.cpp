@@ -70,7 +70,7 @@ void bind_posterior(py::module_& m) {
                               "ln L of a fit's parameters (docs/fitting.md, Posteriors): made by _likelihood(), used "
                               "by bounce.posterior")
       .def_property_readonly("names", &api::Likelihood::names, "the fitted parameters (collision axes, then yield)")
-      .def_property_readonly("ranges", &api::Likelihood::ranges, "each one's default grid [lo, hi] in SI units")
+      .def_property_readonly("ranges", &api::Likelihood::ranges, "each one's default grid [lo, hi] in SI units (yield: at most 0.2 E_soft)")
       .def_property_readonly("weighted", &api::Likelihood::weighted,
                              "True where every point has a cor_error (else sigma is marginalised)")
       .def("evaluate", &evaluate, py::arg("values"), py::arg("threads") = 0,

@@ -17,11 +17,14 @@ namespace {
 // bound stops within its xtol = log(1 + precision) of it.
 void warn_about_edges(const FitProblem& p, FitResult& r) {
   const double tolerance = std::log1p(p.precision);
+  r.grid_edges.assign(r.profiles.size(), 0);
   for (std::size_t a = 0; a < r.profiles.size(); ++a) {
     const auto& v = r.profiles[a].values;
     if (v.size() < 2 || (r.yield_lower_limit && a + 1 == r.names.size() && p.yield_axis)) continue;
     const double x = std::log(r.best.values[a]);
-    if (x - std::log(v.front()) <= tolerance || std::log(v.back()) - x <= tolerance) {
+    const bool lower = x - std::log(v.front()) <= tolerance, upper = std::log(v.back()) - x <= tolerance;
+    if (lower || upper) {
+      r.grid_edges[a] = lower ? -1 : 1;
       r.warnings.push_back(fmt::format("the best {} lies on the edge of its grid ({:.4g} .. {:.4g}): a limit, not a "
                                        "value; widen the grid to locate it",
                                        r.names[a], v.front(), v.back()));

@@ -141,8 +141,12 @@ Record comparison_row(const Comparison& k, const Fitted& f, const analysis::Expe
   Record row;
   row.set("label", k.label);
   row.set("model", k.model);
-  for (const char* key : {"fitted", "best", "chi2", "ranges", "parameters", "aic", "bic", "warnings"}) row.set(key, r.at(key));
-  if (r.contains("chi2_weighted")) row.set("chi2_weighted", r.at("chi2_weighted"));
+  for (const char* key : {"fitted", "best", "units", "grid_edges", "chi2", "ranges", "parameters", "aic", "bic", "warnings"}) {
+    row.set(key, r.at(key));
+  }
+  for (const char* key : {"chi2_weighted", "lower_limits"}) {
+    if (r.contains(key)) row.set(key, r.at(key));
+  }
   return row;
 }
 

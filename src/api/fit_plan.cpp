@@ -150,6 +150,11 @@ Case detail::trial_case(const detail::Plan& plan, std::span<const double> values
   return detail::make_case(b);
 }
 
+double detail::soft_modulus(const Pair& pair) {
+  const double e1 = pair.body1().material.youngs_modulus, e2 = pair.body2().material.youngs_modulus;
+  return pair.body2().rigid ? e1 : std::min(e1, e2);
+}
+
 detail::Plan detail::make_plan(const Bound& bound, const Inputs& inputs, const std::string& model) {
   detail::Plan plan;
   plan.model = model;
@@ -171,8 +176,7 @@ detail::Plan detail::make_plan(const Bound& bound, const Inputs& inputs, const s
   plan.bound = bind_inputs(command("fit"), plan.fixed);
   const Pair& pair = plan.pair.emplace(bounce::make_pair(bound.pair));
   plan.gamma_l = pair.surface_energy();
-  const double e1 = pair.body1().material.youngs_modulus, e2 = pair.body2().material.youngs_modulus;
-  plan.e_soft = pair.body2().rigid ? e1 : std::min(e1, e2);
+  plan.e_soft = soft_modulus(pair);
   const auto grids = given_grids(bound.own.text("grid"), plan.fitted);
   for (const ParameterSpec& s : plan.fitted) {
     const auto it = grids.find(s.name);

@@ -46,6 +46,24 @@ Record ranges_record(const std::vector<std::string>& names, const std::vector<an
   return r;
 }
 
+// Each fitted parameter's SI unit from its declaration ("J/m^2", "s", "Pa"; "" when
+// dimensionless), so that every front end prints a value with its unit.
+Record units_record(const Plan& plan) {
+  Record r;
+  for (const ParameterSpec& s : plan.fitted) r.set(s.name, s.unit);
+  return r;
+}
+
+// The parameters whose best value sits on an edge of its grid: "lower" or "upper" (a limit,
+// not a value: docs/fitting.md, "Output"); the others are left out.
+Record edges_record(const std::vector<std::string>& names, const std::vector<int>& edges) {
+  Record r;
+  for (std::size_t a = 0; a < names.size() && a < edges.size(); ++a) {
+    if (edges[a] != 0) r.set(names[a], edges[a] < 0 ? "lower" : "upper");
+  }
+  return r;
+}
+
 Table points_table(const analysis::Experiment& data, const std::vector<double>& model_cor) {
   Table t;
   t.columns = {"line", "velocity", "cor", "cor_error", "outcome", "model_cor", "residual"};
@@ -138,6 +156,8 @@ Record detail::fit_record(const Plan& plan, const analysis::Experiment& data, co
   r.set("data", data.source);
   r.set("fitted", f.names);
   r.set("best", values_record(f.names, f.best.values, f.yield_lower_limit));
+  r.set("units", units_record(plan));
+  r.set("grid_edges", edges_record(f.names, f.grid_edges));
   if (f.yield_lower_limit) r.set("lower_limits", Record().set("yield", *f.yield_lower_limit));
   r.set("chi2", f.best.chi2);
   r.set("ranges", ranges_record(f.names, f.ranges));

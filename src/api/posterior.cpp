@@ -1,8 +1,11 @@
 // A fit's likelihood for Bayesian sampling (api/posterior.hpp).
 #include "bounce/api/posterior.hpp"
 
+#include <algorithm>
+
 #include "bounce/analysis/likelihood.hpp"
 #include "bounce/core/error.hpp"
+#include "fit_plan.hpp"
 
 namespace bounce::api {
 
@@ -16,11 +19,20 @@ std::vector<std::string> Likelihood::names() const {
   return out;
 }
 
+// The prior of a yield strength ends at the theoretical bound 0.2 E_soft (K13 Fig 7 (b),
+// fit_plan.hpp), where the fit's default grid goes on to 1 E_soft to see where no collision yields.
 std::vector<std::array<double, 2>> Likelihood::ranges() const {
   std::vector<std::array<double, 2>> out;
   const analysis::FitProblem& p = job_.problem();
-  for (const analysis::FitAxis& a : p.collision_axes) out.push_back({a.values.front(), a.values.back()});
-  if (p.yield_axis) out.push_back({p.yield_axis->values.front(), p.yield_axis->values.back()});
+  std::vector<double> first;
+  for (const analysis::FitAxis& a : p.collision_axes) {
+    out.push_back({a.values.front(), a.values.back()});
+    first.push_back(a.values.front());
+  }
+  if (p.yield_axis) {
+    const double bound = detail::theoretical_yield_over_e_soft * detail::soft_modulus(p.case_at(first).pair);
+    out.push_back({p.yield_axis->values.front(), std::min(p.yield_axis->values.back(), bound)});
+  }
   return out;
 }
 

@@ -143,6 +143,9 @@ struct FitResult {
   std::size_t grid_collisions = 0;  ///< ... of which on the grid
   std::size_t failed_trials = 0;  ///< grid points whose collisions failed (NumericalError)
   std::vector<std::string> warnings;
+  /// Per parameter: the best value on its grid's lower edge (-1), upper edge (+1), or inside
+  /// (0); an edge's best is a limit, not a value (a warning says so too).
+  std::vector<int> grid_edges;
   /// Set when the data do not determine the yield strength: at the best fit every measured
   /// speed lies below the yield velocity K13 (28), so chi^2 is the same for every Y at or above
   /// this one (the Y whose yield velocity is the fastest speed). A lower limit, not a value:

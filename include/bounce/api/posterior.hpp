@@ -19,7 +19,8 @@ class Likelihood {
   Likelihood(const Inputs& inputs, const analysis::Experiment& data);
   /// The fitted parameters: the collision axes, then yield.
   std::vector<std::string> names() const;
-  /// Each one's grid [lo, hi] in SI: the fit's (default) range, the prior's default.
+  /// Each one's grid [lo, hi] in SI: the fit's (default) range, the prior's default; a yield
+  /// strength's ends at most at the theoretical 0.2 E_soft (K13 Fig 7 (b)).
   std::vector<std::array<double, 2>> ranges() const;
   /// ln L of `rows` trials (`values` row-major, names() columns, SI), on the fit's threads
   /// (`threads`: 0 every core).
