@@ -33,7 +33,7 @@ std::pair<Sphere, Sphere> oblique() {
   return {a, b};
 }
 
-constexpr double dt = 5e-11;  // about t_H/100 for these grains at 3 m/s
+constexpr double time_step = 5e-11;  // about t_H/100 for these grains at 3 m/s
 
 }  // namespace
 
@@ -42,7 +42,7 @@ constexpr double dt = 5e-11;  // about t_H/100 for these grains at 3 m/s
 TEST(DemState, FlatArrayMidContactContinuesBitForBit) {
   const models::DemModel law = krijt_with_friction();
   auto [a, b] = oblique();
-  TwoSpheres kept(law, a, b, dt), flat(law, a, b, dt);
+  TwoSpheres kept(law, a, b, time_step), flat(law, a, b, time_step);
   kept.setup(), flat.setup();
   kept.run(800);
   flat.run(150);
@@ -64,7 +64,7 @@ TEST(DemState, FlatArrayMidContactContinuesBitForBit) {
 TEST(DemState, OtherBodyViewGivesEqualAndOppositeLoads) {
   const models::DemModel law = krijt_with_friction();
   auto [a, b] = oblique();
-  TwoSpheres run(law, a, b, dt);
+  TwoSpheres run(law, a, b, time_step);
   run.setup();
   run.run(150);
   const dem::Layout& layout = run.layout();
@@ -76,7 +76,7 @@ TEST(DemState, OtherBodyViewGivesEqualAndOppositeLoads) {
   const double r = std::hypot(one.x[0] - two.x[0], one.x[1] - two.x[1], one.x[2] - two.x[2]);
   const dem::Kinematics kij = dem::pair_kinematics(one.motion(), two.motion(), r);
   const dem::Kinematics kji = dem::pair_kinematics(two.motion(), one.motion(), r);
-  const dem::StepSettings s{dt, true, true};
+  const dem::StepSettings s{time_step, true, true};
   const dem::Loads lij = dem::loads(dem::step(law, run.geometry(), kij, s, ij), kij, one.radius, two.radius);
   const dem::Loads lji = dem::loads(dem::step(law, run.geometry(), kji, s, ji), kji, two.radius, one.radius);
   ASSERT_NE(lij.torque1[2], 0.0);
