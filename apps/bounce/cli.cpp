@@ -26,6 +26,8 @@
 
 namespace {
 
+using bounce::cli::full_name;
+
 // The options of a (sub)command as typed: "--velocity", "--help", ...
 std::vector<std::string> long_options(const CLI::App& app) {
   std::vector<std::string> names;
@@ -33,13 +35,6 @@ std::vector<std::string> long_options(const CLI::App& app) {
     for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
   }
   return names;
-}
-
-// A command's name as typed: `atlas query` for a subcommand of `atlas`.
-std::string full_name(const CLI::App& command) {
-  const CLI::App* parent = command.get_parent();
-  return parent != nullptr && parent->get_parent() != nullptr ? parent->get_name() + " " + command.get_name()
-                                                              : command.get_name();
 }
 
 // What the user typed that the chosen command does not take, in the one-line rule

@@ -71,14 +71,13 @@ const Steps& steps() {
   return table;
 }
 
-// "collide", or "atlas build" for a command of a group.
-std::string full_name(const CLI::App* app) {
-  const CLI::App* parent = app->get_parent();
-  return parent != nullptr && parent->get_parent() != nullptr ? parent->get_name() + " " + app->get_name()
-                                                              : app->get_name();
-}
-
 }  // namespace
+
+std::string full_name(const CLI::App& command) {
+  const CLI::App* parent = command.get_parent();
+  return parent != nullptr && parent->get_parent() != nullptr ? parent->get_name() + " " + command.get_name()
+                                                              : command.get_name();
+}
 
 const FirstSteps* first_steps(std::string_view command) {
   const auto it = steps().find(command);
@@ -87,7 +86,7 @@ const FirstSteps* first_steps(std::string_view command) {
 
 std::string ExamplesFormatter::make_usage(const CLI::App* app, std::string name) const {
   std::string out = CLI::Formatter::make_usage(app, std::move(name));
-  const FirstSteps* s = app->get_parent() != nullptr ? first_steps(full_name(app)) : nullptr;
+  const FirstSteps* s = app->get_parent() != nullptr ? first_steps(full_name(*app)) : nullptr;
   if (s == nullptr || s->examples.empty()) return out;
   out += "\nExamples:\n";
   for (const std::string_view e : s->examples) out += "  " + std::string(e) + "\n";

@@ -2,6 +2,7 @@
 // Each command's first steps: what it needs, and examples that run as written (each command's
 // --help shows them under its usage; tests/python/test_first_steps.py runs every one).
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -13,6 +14,9 @@ struct FirstSteps {
   std::string_view needs;                  ///< what a run needs, "" for a command that runs alone
   std::vector<std::string_view> examples;  ///< shell lines, run from an empty folder
 };
+
+/// A command's name as typed: "collide", or "atlas build" for a command of a group.
+std::string full_name(const CLI::App& command);
 
 /// The first steps of a command by its full name ("collide", "atlas build"), or nullptr.
 const FirstSteps* first_steps(std::string_view command);

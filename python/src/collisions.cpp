@@ -30,17 +30,6 @@ void require_finite_results(const Value& results, double velocity) {
   }
 }
 
-// Each kind of warning once (bounce::message_kind), with its latest text.
-void merge_warnings(std::vector<std::string>& all, const std::vector<std::string>& more) {
-  for (const std::string& w : more) {
-    const std::string kind = message_kind(w.substr(w.find(": ") + 2));
-    const auto same = std::find_if(all.begin(), all.end(),
-                                   [&](const std::string& a) { return message_kind(a.substr(a.find(": ") + 2)) == kind; });
-    if (same == all.end()) all.push_back(w);
-    else *same = w;
-  }
-}
-
 // collide() over speeds, in pieces between which Ctrl-C is checked: each piece (one front
 // door call, GIL released) is sized from the last one's time per collision to take about
 // 20 ms (at most twice the last, at most 4096 speeds), so the checks cost nothing and a
@@ -56,13 +45,11 @@ Table collide_in_pieces(const api::Inputs& inputs, const std::vector<double>& v,
                                    v.begin() + static_cast<std::ptrdiff_t>(done + n));
     const auto start = Clock::now();
     Table t;
-    std::vector<std::string> said;
     {
       py::gil_scoped_release release;
-      t = api::collide_columns(inputs, part, &said);
+      t = api::collide_columns(inputs, part, &warnings);  // each kind once over all the pieces
     }
     check_signals();
-    merge_warnings(warnings, said);
     if (all.columns.empty()) all.columns = t.columns;
     for (auto& row : t.rows) all.rows.push_back(std::move(row));
     done += n;

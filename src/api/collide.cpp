@@ -228,14 +228,14 @@ Table collide_columns(const Inputs& inputs, const std::vector<double>& velocitie
   Table t;
   t.columns = {"velocity", "cor", "outcome", "contact_time", "max_overlap", "bulk_dissipated", "crack_dissipated"};
   if (oblique) t.columns.push_back("cor_tangential");
-  std::vector<std::string> kinds;  // message_kind of each of *warnings
+  const auto kind_of = [](const std::string& said) { return message_kind(said.substr(said.find(": ") + 2)); };
   for (const double v : velocities) {
     const auto o = analysis::collide(c.pair, c.model, v, options);
     for (const std::string& w : warnings ? o.warnings : std::vector<std::string>{}) {
       const std::string kind = message_kind(w), text = fmt::format("at velocity {:g}: {}", v, w);
-      const auto at = std::find(kinds.begin(), kinds.end(), kind);
-      if (at == kinds.end()) kinds.push_back(kind), warnings->push_back(text);
-      else (*warnings)[static_cast<std::size_t>(at - kinds.begin())] = text;
+      const auto same = std::find_if(warnings->begin(), warnings->end(), [&](const auto& a) { return kind_of(a) == kind; });
+      if (same == warnings->end()) warnings->push_back(text);
+      else *same = text;
     }
     std::vector<Value> row = {v, o.cor, dynamics::to_string(o.outcome), o.contact_time, o.max_overlap,
                               o.energy.bulk_dissipated, o.energy.crack_dissipated};

@@ -106,7 +106,8 @@ Table curve_table(const Record& curve);
 /// collide() over speeds as columns (velocity, cor, outcome, contact_time, max_overlap,
 /// bulk_dissipated, crack_dissipated, and cor_tangential when oblique): Python's arrays.
 /// `warnings`: where given, each kind of validity warning the collisions gave, once, as the CLI's
-/// curve prints them ("at velocity 10: ..." of the last speed that gave it).
+/// curve prints them ("at velocity 10: ..." of the last speed that gave it), merged into what it
+/// holds already (a curve computed in pieces).
 Table collide_columns(const Inputs& inputs, const std::vector<double>& velocities,
                       std::vector<std::string>* warnings = nullptr);
 Record sticking(const Inputs& inputs, const Progress& progress = {});
