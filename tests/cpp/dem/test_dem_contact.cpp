@@ -65,6 +65,38 @@ api::Inputs krijt(double tvis, double z0) {
   return with(ice, {{"model", std::string("krijt")}, {"tvis", tvis}, {"z0", z0}});
 }
 
+// The DEM law of a collide's inputs: the same without the radii (a DEM's atoms have theirs).
+models::DemModel law_of(api::Inputs in) {
+  in.erase("radius"), in.erase("radius2");
+  return api::contact_law(in);
+}
+
+// One of docs/lammps.md's twelve krijt cases: its inputs, `bounce sticking`'s v_s and its DEM law.
+struct KrijtCase {
+  std::string name;
+  api::Inputs in;
+  double vs;
+  models::DemModel law;
+  // The head-on collision at v at t_H/100 (K13 (22) at v), run 8 t_H, and collide's record.
+  std::pair<Head, Record> at(double v) const {
+    const Record ref = api::collide(with(in, {{"velocity", v}}));
+    const double dt = ref.at("closed_forms").record().at("hertz_time_k13_22").number() / 100;
+    return {head_on(law, ref, v, dt, 800), ref};
+  }
+};
+
+std::vector<KrijtCase> krijt_cases() {
+  std::vector<KrijtCase> out;
+  for (double tvis : {1e-14, 1e-13, 1e-12, 1e-11}) {
+    for (double z0 : {1e-10, 2e-10, 3e-10}) {
+      const api::Inputs in = krijt(tvis, z0);
+      out.push_back({"T_vis " + std::to_string(tvis) + " z0 " + std::to_string(z0), in,
+                     api::sticking(in).at("sticking_velocity").number(), law_of(in)});
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 // docs/lammps.md's head-on force laws: ice on quartz, viscoelastic (A = 1e-5 s), 1 m/s, at
@@ -73,9 +105,7 @@ TEST(DemContact, ViscoelasticHeadOnAgreesWithCollide) {
   const api::Inputs in{{"material", std::string("ice-bshp96")}, {"radius", 0.01}, {"material2", std::string("quartz")},
                        {"radius2", 0.004}, {"model", std::string("viscoelastic")}, {"A", 1e-5}};
   const Record ref = api::collide(with(in, {{"velocity", 1.0}}));
-  api::Inputs law_in = in;
-  law_in.erase("radius"), law_in.erase("radius2");
-  const models::DemModel law = api::contact_law(law_in);
+  const models::DemModel law = law_of(in);
   const double dt = ref.at("contact_time").number() / 1000;
   const Head h = head_on(law, ref, 1.0, dt, 3000);
   EXPECT_NEAR(h.cor, ref.at("cor").number(), 2e-5);
@@ -86,23 +116,12 @@ TEST(DemContact, ViscoelasticHeadOnAgreesWithCollide) {
 // 1.20076e-3: this loop gives LAMMPS's COR there to all 16 digits) and its energy budget closes to
 // 7.9e-4; the bounds here are 1.25e-3 and 8e-4.
 TEST(DemContact, KrijtHeadOnAgreesWithCollideAndClosesItsBudget) {
-  for (double tvis : {1e-14, 1e-13, 1e-12, 1e-11}) {
-    for (double z0 : {1e-10, 2e-10, 3e-10}) {
-      const api::Inputs in = krijt(tvis, z0);
-      const double vs = api::sticking(in).at("sticking_velocity").number();
-      api::Inputs law_in = in;
-      law_in.erase("radius");
-      const models::DemModel law = api::contact_law(law_in);
-      for (double ratio : {0.5, 1.5, 3.0, 5.0}) {
-        const double v = ratio * vs;
-        const Record ref = api::collide(with(in, {{"velocity", v}}));
-        const double dt = ref.at("closed_forms").record().at("hertz_time_k13_22").number() / 100;
-        const Head h = head_on(law, ref, v, dt, 800);
-        const std::string where = "T_vis " + std::to_string(tvis) + " z0 " + std::to_string(z0) + " v/v_s " +
-                                  std::to_string(ratio);
-        EXPECT_NEAR(h.cor, ref.at("cor").number(), 1.25e-3) << where;
-        EXPECT_LE(std::abs(h.closure), 8e-4) << where;
-      }
+  for (const KrijtCase& c : krijt_cases()) {
+    for (double ratio : {0.5, 1.5, 3.0, 5.0}) {
+      const auto [h, ref] = c.at(ratio * c.vs);
+      const std::string where = c.name + " v/v_s " + std::to_string(ratio);
+      EXPECT_NEAR(h.cor, ref.at("cor").number(), 1.25e-3) << where;
+      EXPECT_LE(std::abs(h.closure), 8e-4) << where;
     }
   }
 }
@@ -110,21 +129,12 @@ TEST(DemContact, KrijtHeadOnAgreesWithCollideAndClosesItsBudget) {
 // The sticking velocity bisected here to 0.05 % is within 0.06 % of `bounce sticking` for the
 // twelve (T_vis, z0) at t_H/100 (the plugin's, docs/lammps.md).
 TEST(DemContact, KrijtStickingVelocityAgreesWithBounceSticking) {
-  for (double tvis : {1e-14, 1e-13, 1e-12, 1e-11}) {
-    for (double z0 : {1e-10, 2e-10, 3e-10}) {
-      const api::Inputs in = krijt(tvis, z0);
-      const double vs = api::sticking(in).at("sticking_velocity").number();
-      api::Inputs law_in = in;
-      law_in.erase("radius");
-      const models::DemModel law = api::contact_law(law_in);
-      double lo = 0.8 * vs, hi = 1.2 * vs;
-      while (hi - lo > 5e-4 * vs) {
-        const double v = 0.5 * (lo + hi);
-        const Record ref = api::collide(with(in, {{"velocity", v}}));
-        const double dt = ref.at("closed_forms").record().at("hertz_time_k13_22").number() / 100;
-        (head_on(law, ref, v, dt, 800).stuck ? lo : hi) = v;
-      }
-      EXPECT_NEAR(0.5 * (lo + hi) / vs, 1.0, 6e-4) << "T_vis " << tvis << " z0 " << z0;
+  for (const KrijtCase& c : krijt_cases()) {
+    double lo = 0.8 * c.vs, hi = 1.2 * c.vs;
+    while (hi - lo > 5e-4 * c.vs) {
+      const double v = 0.5 * (lo + hi);
+      (c.at(v).first.stuck ? lo : hi) = v;
     }
+    EXPECT_NEAR(0.5 * (lo + hi) / c.vs, 1.0, 6e-4) << c.name;
   }
 }
