@@ -67,7 +67,7 @@ FixWallBounce::FixWallBounce(LAMMPS *instance, int narg, char **arg) : Fix(insta
     }
   }
   try {
-    law_ = std::make_shared<const bounce::models::DemModel>(bounce::api::wall_contact_law(inputs));
+    law_ = std::make_shared<const bounce::models::DemModel>(bounce::api::wall_dem_model(inputs));
   } catch (const std::exception &e) {
     error->all(FLERR, "fix wall/bounce {}: {}", arg[6], e.what());
   }

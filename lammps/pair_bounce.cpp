@@ -26,7 +26,7 @@
 #include "update.h"
 #include "utils.h"
 
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 #include "bounce/dem/contact.hpp"
 #include "stop.h"
 #include "type_laws.h"

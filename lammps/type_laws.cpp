@@ -67,7 +67,7 @@ std::shared_ptr<const TypeLaw> make_type_law(const Coeffs& coeffs) {
   entry->coeffs = coeffs;
   api::Inputs inputs;
   for (const auto& [key, value] : coeffs) inputs[key] = value;
-  entry->law = api::contact_law(inputs);
+  entry->law = api::dem_model(inputs);
   const models::ContactGeometry unit{1.0, 1.0};
   entry->beyond = entry->law.release_overlap(unit) < 0.0;
   entry->snaps = entry->law.snap_overlap(unit) < 0.0;

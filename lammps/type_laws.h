@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 
 namespace bounce::lammps {
 

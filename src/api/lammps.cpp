@@ -22,10 +22,8 @@ namespace {
 CommandSpec make_pair_coeff_command() {
   CommandSpec c{"pair_coeff", "LAMMPS pair_style bounce: a model as the contact law of one pair of atom types", true,
                 true, {}};
-  for (const auto& row : models::model_registry().rows()) {
-    if (row.dem()) c.models.push_back(row.name);
-  }
-  c.models_why = fmt::format("a model with a DEM contact law: {}", fmt::join(c.models, ", "));
+  c.models = models::model_registry().names();  // every model has a DEM law (models/model.hpp)
+  c.models_why = fmt::format("a model with a DEM law: {}", fmt::join(c.models, ", "));
   c.unused = {
       {{"radius", "radius2", "density", "density2", "inertia", "inertia2"},
        "none in LAMMPS: each atom's radius and mass come from LAMMPS (atom_style sphere), and its moment of "
@@ -50,7 +48,7 @@ CommandSpec make_fix_wall_command() {
   // A crack law's contact radius is per-contact history, which fix wall/bounce does not keep.
   c.models.clear();
   for (const auto& row : models::model_registry().rows()) {
-    if (row.contact_law) c.models.push_back(row.name);
+    if (row.traits.engine != models::Engine::crack) c.models.push_back(row.name);
   }
   c.models_why = fmt::format("a model with a DEM wall law: {} (krijt acts between atoms only, in pair_style bounce)",
                              fmt::join(c.models, ", "));
@@ -83,13 +81,13 @@ models::DemModel dem_law(const CommandSpec& command, const Inputs& inputs, bool 
   pair_inputs["density"] = 1.0;
   if (wall && !b.pair.flag("rigid_wall")) pair_inputs["wall"] = true;
   const Pair pair = bounce::make_pair(bind_parameters(pair_parameters(), pair_inputs, "the pair"));
-  return models::make_contact_law(pair, b.model, b.model_parameters);
+  return models::make_dem_model(pair, b.model, b.model_parameters);
 }
 }  // namespace
 
-models::DemModel contact_law(const Inputs& inputs) { return dem_law(pair_coeff_command(), inputs, false); }
+models::DemModel dem_model(const Inputs& inputs) { return dem_law(pair_coeff_command(), inputs, false); }
 
-models::DemModel wall_contact_law(const Inputs& inputs) { return dem_law(fix_wall_command(), inputs, true); }
+models::DemModel wall_dem_model(const Inputs& inputs) { return dem_law(fix_wall_command(), inputs, true); }
 
 // --- bounce lammps: the stock pair_style granular lines that best represent a model ------
 

@@ -69,12 +69,13 @@ std::string adhesion_name(models::Adhesion a) {
   return "";
 }
 
-// What a row declares about its model (models::Traits), and which DEM law it has.
+// What a row declares about its model (models::Traits), and which DEM law it has (every model
+// has one: a crack law's where its engine is the crack's).
 Record traits_record(const models::ModelRow& row) {
   const models::Traits& t = row.traits;
   Value::List rules;
   for (models::EndRule r : t.end_rules) rules.emplace_back(std::string(models::to_string(r)));
-  const char* dem = row.crack_law ? "contact radius of its own" : row.contact_law ? "force" : "none";
+  const char* dem = t.engine == models::Engine::crack ? "contact radius of its own" : "force";
   return Record()
       .set("engine", engine_name(t.engine))
       .set("end_rules", rules)

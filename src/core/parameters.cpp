@@ -284,4 +284,25 @@ std::vector<ParameterSpec> merge_specs(std::initializer_list<std::span<const Par
   return out;
 }
 
+void ParameterRule::check(const Parameters& p, std::string_view owner) const {
+  const std::vector<std::string>* first_given = nullptr;
+  for (const auto& alternative : alternatives) {
+    const auto given = std::find_if(alternative.begin(), alternative.end(), [&](const auto& n) { return p.given(n); });
+    if (given == alternative.end()) continue;
+    for (const std::string& name : alternative) {
+      if (p.given(name)) continue;
+      throw InvalidArgument(name, "(not given)", fmt::format("{} given with {} ({})", name, *given, owner));
+    }
+    if (exclusive && first_given) {
+      const std::string typed = p.typed(*given);  // a fit's trial value was set, not typed
+      throw InvalidArgument(*given, typed.empty() ? format_value(p.real(*given).value_or(0.0)) : typed,
+                            fmt::format("{}, not two ({})", expected, owner));
+    }
+    if (!first_given) first_given = &alternative;
+  }
+  if (required && !first_given && !alternatives.empty() && !alternatives.front().empty()) {
+    throw InvalidArgument(alternatives.front().front(), "(not given)", fmt::format("{} ({})", expected, owner));
+  }
+}
+
 }  // namespace bounce

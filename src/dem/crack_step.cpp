@@ -22,7 +22,7 @@ namespace {
    break is the crack's. Returns whether it broke inside the step; where the stretches hold it to
    the step's end, `state` becomes their end state. */
 template <class ForceAt>
-bool break_inside_step(const models::CrackContactLaw& crack, const models::ContactGeometry& g, double before,
+bool break_inside_step(const models::DemCrackLaw& crack, const models::ContactGeometry& g, double before,
                        double overlap, const StepSettings& s, double f_last, const CrackStepState& history,
                        double owed, const ForceAt& force_at, ContactForce& out, models::CrackState& state) {
   models::CrackState now = state;
@@ -89,7 +89,7 @@ class CrackContactStep {
   bool broke(ContactForce& out);
   void record(double elastic, double damping, double xi_rate, ContactForce& out);
 
-  const models::CrackContactLaw& crack_;
+  const models::DemCrackLaw& crack_;
   const models::ContactGeometry& g_;
   const Kinematics& k_;
   const StepSettings& s_;

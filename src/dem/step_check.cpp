@@ -54,7 +54,7 @@ bool check_due(double overlap, double& checked) {
 
 // k = dF/dxi at rate 0 (forward difference) and D the force's change with the rate, from 0 to the
 // contact's rate (or to xi/dt where it is 0): exact for bounce's laws linear in the rate.
-StepCheck check_step(const models::ContactLaw& law, const models::ContactGeometry& g, double overlap, double rate,
+StepCheck check_step(const models::DemLaw& law, const models::ContactGeometry& g, double overlap, double rate,
                      double dt, double q) {
   const double at_rest = law.force(g, overlap, 0.0);
   const double h = probe * overlap;
@@ -64,8 +64,8 @@ StepCheck check_step(const models::ContactLaw& law, const models::ContactGeometr
   return rate_stability(stiffness, damping, g.effective_mass, dt, q);
 }
 
-StepCheck check_crack_step(const models::CrackContactLaw& law, const models::ContactGeometry& g, double overlap,
-                           const models::CrackState& s, const models::CrackContactLaw::Force& force, double dt,
+StepCheck check_crack_step(const models::DemCrackLaw& law, const models::ContactGeometry& g, double overlap,
+                           const models::CrackState& s, const models::DemCrackLaw::Force& force, double dt,
                            double q) {
   const double h = probe * overlap;
   const double stiffness = (law.force(g, overlap + h, s).elastic - force.elastic) / h;

@@ -26,7 +26,7 @@ enum JkrEvent : int { max_compression, release, sticks, end_of_follow, settled }
 
 class AdhesiveContactCollision {
  public:
-  AdhesiveContactCollision(const models::KrijtParameters& p, const models::AdhesiveGeometry& geometry, double speed,
+  AdhesiveContactCollision(const models::AdhesivePair& p, const models::AdhesiveGeometry& geometry, double speed,
                            const AdhesiveCollisionOptions& options);
   CollisionOutcome run();
   // The system: K13 (20) with a and F_E on the branch, and the bulk dissipation K13 (C.3).
@@ -47,7 +47,7 @@ class AdhesiveContactCollision {
   void finish(const detail::IntegrationResult<3>& result);
   void record_end(double t, const State& end, bool bounced, double v);
 
-  const models::KrijtParameters& p_;
+  const models::AdhesivePair& p_;
   const models::AdhesiveGeometry& geometry_;
   const AdhesiveCollisionOptions& options_;
   const double delta_release_;
@@ -59,7 +59,7 @@ class AdhesiveContactCollision {
   TrajectoryRecorder trajectory_{out_.trajectory, out_.trajectory_thinning};
 };
 
-AdhesiveContactCollision::AdhesiveContactCollision(const models::KrijtParameters& p,
+AdhesiveContactCollision::AdhesiveContactCollision(const models::AdhesivePair& p,
                                                    const models::AdhesiveGeometry& geometry, double speed,
                                                    const AdhesiveCollisionOptions& options)
     : p_(p), geometry_(geometry), options_(options), delta_release_(geometry.release_overlap(options.release)),
@@ -278,12 +278,12 @@ CollisionOutcome AdhesiveContactCollision::run() {
 
 }  // namespace
 
-CollisionOutcome integrate_adhesive_collision(const models::KrijtParameters& p, const models::AdhesiveGeometry& geometry,
+CollisionOutcome integrate_adhesive_collision(const models::AdhesivePair& p, const models::AdhesiveGeometry& geometry,
                                               double speed, const AdhesiveCollisionOptions& options) {
   return AdhesiveContactCollision(p, geometry, speed, options).run();
 }
 
-CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParameters& p, double speed,
+CollisionOutcome integrate_jkr_viscoelastic_collision(const models::AdhesivePair& p, double speed,
                                                       const AdhesiveCollisionOptions& options) {
   const auto jkr = models::jkr_geometry(p.effective_radius, p.effective_modulus, p.surface_energy);
   return integrate_adhesive_collision(p, *jkr, speed, options);

@@ -29,7 +29,7 @@ struct Scales {
 };
 
 // `release`: the overlap where an adhesive contact breaks (JKR's delta_c, or another branch's fold).
-inline Scales scales_for(const models::KrijtParameters& p, double speed, double release) {
+inline Scales scales_for(const models::AdhesivePair& p, double speed, double release) {
   const double rho = hertz_constant(p.effective_modulus, p.effective_radius);
   const double xi0 = contact::hertz::reference_overlap(rho, p.effective_mass, speed);
   const contact::jkr::Parameters j{p.effective_radius, p.effective_modulus, p.surface_energy};
@@ -41,12 +41,12 @@ inline Scales scales_for(const models::KrijtParameters& p, double speed, double 
   s.energy = 0.5 * p.effective_mass * speed * speed;
   return s;
 }
-inline Scales scales_for(const models::KrijtParameters& p, double speed) {
+inline Scales scales_for(const models::AdhesivePair& p, double speed) {
   return scales_for(p, speed, contact::jkr::separation_overlap({p.effective_radius, p.effective_modulus, p.surface_energy}));
 }
 
 // Elastic Hertz contact time in the scaled units (a time scale for budgets and sampling).
-inline double scaled_hertz_time(const models::KrijtParameters& p, double speed, const Scales& s) {
+inline double scaled_hertz_time(const models::AdhesivePair& p, double speed, const Scales& s) {
   const double rho = hertz_constant(p.effective_modulus, p.effective_radius);
   return contact::hertz::collision_time(rho, p.effective_mass, speed) / s.time;
 }

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "bounce/contact/hertz.hpp"
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "bounce/pair/mixing.hpp"
 #include "factories.hpp"
@@ -83,7 +83,7 @@ double dissipative_constant_b(const Pair& pair, const AdhesiveViscousParameters&
 // The same forces per DEM contact, their constants from the contact's R_eff. BP04 start and
 // end the contact at a tiny overlap (footnote 2) against the singular xi^{-1/4}; a DEM step
 // samples the force at its own overlaps, from the first positive one to the last.
-class AdhesiveViscoelasticContact final : public ContactLaw {
+class AdhesiveViscoelasticContact final : public DemLaw {
  public:
   AdhesiveViscoelasticContact(double modulus, double gamma, double a, double b)
       : modulus_(modulus), gamma_(gamma), a_(a), b_(b) {}
@@ -101,26 +101,19 @@ class AdhesiveViscoelasticContact final : public ContactLaw {
 
 }  // namespace
 
-std::shared_ptr<const ContactLaw> adhesive_viscoelastic_contact(const Pair& pair, const AdhesiveViscousParameters& p,
-                                                                const Context&) {
-  const double gamma = detail::adhesive_surface_energy(pair, "adhesive-viscoelastic");
-  const double a = detail::dissipative_constant(pair, p, "adhesive-viscoelastic");
-  return std::make_shared<AdhesiveViscoelasticContact>(pair.effective_modulus(), gamma, a,
-                                                       dissipative_constant_b(pair, p, a));
-}
-
 std::unique_ptr<NormalForceModel> make_adhesive_viscoelastic_force(const AdhesiveViscoelasticParameters& p) {
   return std::make_unique<AdhesiveViscoelasticForce>(p);
 }
 
-Model make_adhesive_viscoelastic(const Pair& pair, const AdhesiveViscousParameters& p, const Context&) {
+Made<ForceLaw> make_adhesive_viscoelastic(const Pair& pair, const AdhesiveViscousParameters& p, const Context&) {
   const double gamma = detail::adhesive_surface_energy(pair, "adhesive-viscoelastic");
-  const double dissipative = detail::dissipative_constant(pair, p, "adhesive-viscoelastic");
+  const double dissipative = detail::dissipative_constant(pair, p);
+  const double b = dissipative_constant_b(pair, p, dissipative);
   const AdhesiveViscoelasticParameters a =
-      adhesive_parameters(pair.effective_modulus(), gamma, pair.effective_radius(), pair.effective_mass(), dissipative,
-                          dissipative_constant_b(pair, p, dissipative));
-  Model m;
-  m.normal = ForceLaw{make_adhesive_viscoelastic_force(a)};
+      adhesive_parameters(pair.effective_modulus(), gamma, pair.effective_radius(), pair.effective_mass(), dissipative, b);
+  Made<ForceLaw> m;
+  m.normal = ForceLaw{make_adhesive_viscoelastic_force(a),
+                      std::make_shared<AdhesiveViscoelasticContact>(pair.effective_modulus(), gamma, dissipative, b)};
   m.hertz = HertzScaling{a.rho, a.a};
   m.dissipative_constant = a.a;
   m.viscous_time = detail::viscous_time(pair, p, a.a);

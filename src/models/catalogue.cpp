@@ -84,12 +84,20 @@ const FieldTable<NoParameters>& no_fields() {
   return table;
 }
 
+namespace {
+// A from A, from the viscosities (BP04 (8.38)) or from T_vis (K13 after (18)): one way.
+ParameterRule one_dissipative_constant() {
+  return {{{"A"}, {"eta1", "eta2"}, {"tvis"}}, true, true, "one of A, the viscosities eta1 and eta2, or T_vis"};
+}
+}  // namespace
+
 const FieldTable<ViscousParameters>& viscous_fields() {
   using S = ViscousParameters;
-  static const FieldTable<S> table{{dissipative_constant(), &S::dissipative_constant},
-                                   {shear_viscosity(), &S::shear_viscosity},
-                                   {bulk_viscosity(), &S::bulk_viscosity},
-                                   {relaxation_time(), &S::relaxation_time}};
+  static const FieldTable<S> table = FieldTable<S>{{dissipative_constant(), &S::dissipative_constant},
+                                                   {shear_viscosity(), &S::shear_viscosity},
+                                                   {bulk_viscosity(), &S::bulk_viscosity},
+                                                   {relaxation_time(), &S::relaxation_time}}
+                                         .with(one_dissipative_constant());
   return table;
 }
 
@@ -105,28 +113,34 @@ const FieldTable<PowerLawParameters>& power_law_fields() {
 
 const FieldTable<AdhesiveViscousParameters>& adhesive_viscous_fields() {
   using S = AdhesiveViscousParameters;
-  static const FieldTable<S> table{{dissipative_constant(), &S::dissipative_constant},
-                                   {shear_viscosity(), &S::shear_viscosity},
-                                   {bulk_viscosity(), &S::bulk_viscosity},
-                                   {relaxation_time(), &S::relaxation_time},
-                                   {dissipative_constant_b(), &S::dissipative_constant_b},
-                                   {z0(), &S::z0}};
+  static const FieldTable<S> table = FieldTable<S>{{dissipative_constant(), &S::dissipative_constant},
+                                                   {shear_viscosity(), &S::shear_viscosity},
+                                                   {bulk_viscosity(), &S::bulk_viscosity},
+                                                   {relaxation_time(), &S::relaxation_time},
+                                                   {dissipative_constant_b(), &S::dissipative_constant_b},
+                                                   {z0(), &S::z0}}
+                                         .with(one_dissipative_constant());
   return table;
 }
 
 const FieldTable<ContactModelParameters>& contact_fields() {
   using S = ContactModelParameters;
-  static const FieldTable<S> table{
-      {relaxation_time(), &S::relaxation_time}, {dissipative_constant(), &S::dissipative_constant}, {z0(), &S::z0}};
+  // The bulk damping A of K13 (19): given, or T_vis / nu^2 (K13 after (18)); both may be given.
+  static const FieldTable<S> table =
+      FieldTable<S>{
+          {relaxation_time(), &S::relaxation_time}, {dissipative_constant(), &S::dissipative_constant}, {z0(), &S::z0}}
+          .with({{{"tvis"}, {"A"}}, false, true, "a viscous relaxation time T_vis > 0 s, or A"});
   return table;
 }
 
 const FieldTable<CrackModelParameters>& crack_fields() {
   using S = CrackModelParameters;
-  static const FieldTable<S> table{{relaxation_time(), &S::relaxation_time},
-                                   {dissipative_constant(), &S::dissipative_constant},
-                                   {krijt_z0(), &S::z0},
-                                   {k(), &S::k}};
+  static const FieldTable<S> table = FieldTable<S>{{relaxation_time(), &S::relaxation_time},
+                                                   {dissipative_constant(), &S::dissipative_constant},
+                                                   {krijt_z0(), &S::z0},
+                                                   {k(), &S::k}}
+                                         .with({{{"tvis"}}, true, true,
+                                                "a viscous relaxation time T_vis > 0 s for the crack law K13 (16)"});
   return table;
 }
 

@@ -24,11 +24,10 @@ double HertzTypeForce::reference_overlap(double speed) const {  // BP04 (8.65), 
 }
 
 namespace {
-// BP04 (8.38) is derived for one material; a rigid wall does not deform.
+// BP04 (8.38) is derived for one material; a rigid wall does not deform. Both viscosities are
+// given (the parameter table's rule).
 double from_viscosities(const Pair& pair, const ViscousParameters& p) {
-  if (!p.shear_viscosity) throw InvalidArgument("eta1", "(not given)", "a shear viscosity >= 0 Pa s");
-  if (!p.bulk_viscosity) throw InvalidArgument("eta2", "(not given)", "a bulk viscosity >= 0 Pa s");
-  const double eta1 = *p.shear_viscosity, eta2 = *p.bulk_viscosity;
+  const double eta1 = p.shear_viscosity.value_or(0.0), eta2 = p.bulk_viscosity.value_or(0.0);
   if (eta1 == 0.0 && eta2 == 0.0) return 0.0;
   const Material& m1 = pair.body1().material;
   const Material& m2 = pair.body2().material;
@@ -57,21 +56,14 @@ double require_short_viscous_time(const Pair& pair, double value, const std::str
                                     what, longest_viscous_time_ratio * t_h, longest_viscous_time_ratio, t_h));
 }
 
-double dissipative_constant(const Pair& pair, const ViscousParameters& p, std::string_view model) {
-  const bool a = p.dissipative_constant.has_value(), tvis = p.relaxation_time.has_value();
-  const bool viscosities = p.shear_viscosity || p.bulk_viscosity;
-  if (a + viscosities + tvis > 1) {  // name the second way given: A beats eta1, eta2, which beat tvis
-    std::pair<const char*, double> second{"tvis", p.relaxation_time.value_or(0.0)};
-    if (a && p.bulk_viscosity) second = {"eta2", *p.bulk_viscosity};
-    if (a && p.shear_viscosity) second = {"eta1", *p.shear_viscosity};
-    throw InvalidArgument(second.first, format_value(second.second),
-                          "one of A, the viscosities eta1 and eta2, or T_vis, not two");
+// One of A, the viscosities or T_vis is given (the parameter table's rule, checked where the
+// model is made).
+double dissipative_constant(const Pair& pair, const ViscousParameters& p) {
+  if (p.dissipative_constant) {
+    return require_short_viscous_time(pair, *p.dissipative_constant, "A", "a dissipative constant A [s]");
   }
-  if (a) return require_short_viscous_time(pair, *p.dissipative_constant, "A", "a dissipative constant A [s]");
-  if (tvis) return krijt_dissipative_constant(*p.relaxation_time, pair);  // K13 after (18)
-  if (viscosities) return from_viscosities(pair, p);
-  throw InvalidArgument("A", "(not given)",
-                        fmt::format("a dissipative constant A >= 0 s, eta1 and eta2, or T_vis (model {})", model));
+  if (p.relaxation_time) return krijt_dissipative_constant(*p.relaxation_time, pair);  // K13 after (18)
+  return from_viscosities(pair, p);
 }
 
 double viscous_time(const Pair& pair, const ViscousParameters& p, double a) {
@@ -101,37 +93,32 @@ double adhesive_surface_energy(const Pair& pair, std::string_view model) {
   return require_positive("gamma", gamma, fmt::format("surface energy gamma [J/m^2] ({} needs gamma > 0)", who));
 }
 
-// K13's parameters for the pair: gamma of the pair, T_vis, A (given, or T_vis / nu^2 by
-// K13 after (18)), z0 and k. krijt needs T_vis (its crack law); the others A or T_vis.
-KrijtParameters contact_parameters(const Pair& pair, const ContactModelParameters& p, std::string_view name,
-                                   std::optional<double> k) {
-  KrijtParameters out;
+// The adhesive pair of a contact model: gamma of the pair, A (given, or T_vis / nu^2 by K13
+// after (18): one of them is, the parameter table's rule), z0.
+AdhesivePair adhesive_pair(const Pair& pair, const ContactModelParameters& p, std::string_view name) {
+  AdhesivePair out;
   out.effective_radius = pair.effective_radius();
   out.effective_modulus = pair.effective_modulus();
   out.effective_mass = pair.effective_mass();
   out.surface_energy = adhesive_surface_energy(pair, name);
-  if (p.relaxation_time) {
-    out.relaxation_time = require_short_viscous_time(pair, *p.relaxation_time, "tvis", "a viscous relaxation time T_vis [s]");
-  } else if (k || !p.dissipative_constant) {
-    throw InvalidArgument("tvis", "(not given)",
-                          fmt::format("a viscous relaxation time T_vis > 0 s (model {}{})", name, k ? "" : "; or A"));
-  }
+  const std::optional<double> tvis =
+      p.relaxation_time ? std::optional(require_short_viscous_time(pair, *p.relaxation_time, "tvis",
+                                                                   "a viscous relaxation time T_vis [s]"))
+                        : std::nullopt;
   out.dissipative_constant = p.dissipative_constant
                                  ? require_short_viscous_time(pair, *p.dissipative_constant, "A", "a dissipative constant A [s]")
-                                 : krijt_dissipative_constant(out.relaxation_time, pair);
+                                 : krijt_dissipative_constant(tvis.value_or(0.0), pair);
   out.z0 = p.z0;
-  if (k) out.k = *k;
   return out;
 }
 
-// The slots of a model with K13's parameters.
-Model contact_model(const KrijtParameters& k, const ContactModelParameters& p, NormalInteraction normal) {
-  Model m;
-  m.normal = std::move(normal);
-  m.dissipative_constant = k.dissipative_constant;
-  m.viscous_time = p.relaxation_time ? k.relaxation_time : k.dissipative_constant;
-  m.z0 = k.z0;
-  return m;
+// K13's parameters: the adhesive pair, T_vis (given: the table's rule) and k.
+KrijtParameters krijt_parameters(const Pair& pair, const CrackModelParameters& p) {
+  KrijtParameters out;
+  static_cast<AdhesivePair&>(out) = adhesive_pair(pair, p, "krijt");
+  out.relaxation_time = p.relaxation_time.value_or(0.0);
+  out.k = p.k;
+  return out;
 }
 
 AdhesiveRelease adhesive_release(EndRule rule) {

@@ -7,7 +7,7 @@
 
 #include "bounce/contact/convex.hpp"
 #include "bounce/contact/hertz.hpp"
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 #include "bounce/models/krijt.hpp"
 #include "bounce/models/model.hpp"
 #include "bounce/models/model_parameters.hpp"
@@ -31,10 +31,10 @@ class HertzTypeForce : public NormalForceModel {
   HertzGeometry g_;
 };
 
-/// A Hertz-type law as a DEM contact law (contact_law.hpp): `Law(C0, A, xi, xi')` with C0 = rho
+/// A Hertz-type law as a DEM law (dem_law.hpp): `Law(C0, A, xi, xi')` with C0 = rho
 /// of BP04 (8.24) from the contact's R_eff, and the Hertz potential.
 template <double (*Law)(double, double, double, double)>
-class HertzTypeContact final : public ContactLaw {
+class HertzTypeContact final : public DemLaw {
  public:
   HertzTypeContact(double modulus, double a) : modulus_(modulus), a_(a) {}
   double force(const ContactGeometry& g, double xi, double rate) const override {
@@ -61,8 +61,8 @@ double shortest_contact_time(const Pair& pair);
 double require_short_viscous_time(const Pair& pair, double value, const std::string& name, const std::string& what);
 
 /// A [s]: given, from eta1 and eta2 (BP04 (8.38), bodies of one material), or T_vis / nu^2
-/// (K13 after (18)); exactly one of these.
-double dissipative_constant(const Pair& pair, const ViscousParameters& p, std::string_view model);
+/// (K13 after (18)); exactly one of these is given (the parameter table's rule).
+double dissipative_constant(const Pair& pair, const ViscousParameters& p);
 
 /// The viscous relaxation time that must be << t_c (BSHP96 (B12), BP04 (8.26)): with
 /// viscosities, BSHP96 (B13) tau_i = eta_i / E_i; otherwise A (for eta2/E2 = eta1/E1 = tau,
@@ -76,12 +76,21 @@ HertzGeometry hertz_geometry(const Pair& pair, const std::optional<contact::conv
 /// The pair's gamma, which adhesive models need > 0.
 double adhesive_surface_energy(const Pair& pair, std::string_view model);
 
-/// K13's parameters of a contact model for the pair: gamma (> 0), T_vis (required with a crack
-/// law's k, else T_vis or A), A (given, or T_vis / nu^2 by K13 after (18)), z0, and k.
-KrijtParameters contact_parameters(const Pair& pair, const ContactModelParameters& p, std::string_view model,
-                                   std::optional<double> k = std::nullopt);
-/// A contact model with those parameters and its normal interaction (A, viscous time, z0 set).
-Model contact_model(const KrijtParameters& k, const ContactModelParameters& p, NormalInteraction normal);
+/// The adhesive pair of a contact model: gamma (> 0), A (given, or T_vis / nu^2 by K13 after
+/// (18)), z0; a given T_vis or A is checked short against the contact time.
+AdhesivePair adhesive_pair(const Pair& pair, const ContactModelParameters& p, std::string_view model);
+/// krijt's: the adhesive pair, T_vis and k.
+KrijtParameters krijt_parameters(const Pair& pair, const CrackModelParameters& p);
+/// A contact model's physics with that pair and its normal interaction (A, viscous time, z0 set).
+template <class Kind>
+Made<Kind> contact_model(const AdhesivePair& k, const ContactModelParameters& p, Kind normal) {
+  Made<Kind> m;
+  m.normal = std::move(normal);
+  m.dissipative_constant = k.dissipative_constant;
+  m.viscous_time = p.relaxation_time.value_or(k.dissipative_constant);
+  m.z0 = k.z0;
+  return m;
+}
 /// Where a contact held on its adhesive branch breaks, by the end rule (pull-off, else the fold).
 AdhesiveRelease adhesive_release(EndRule rule);
 

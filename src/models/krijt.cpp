@@ -12,13 +12,13 @@
 #include "bounce/contact/hertz.hpp"
 #include "bounce/contact/independent.hpp"
 #include "bounce/contact/jkr.hpp"
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/pair/mixing.hpp"
 #include "bounce/models/crack.hpp"
 #include "factories.hpp"
-#include "adhesive_contact_law.hpp"
+#include "adhesive_dem_law.hpp"
 #include "adhesive_geometries.hpp"
 #include "crack_step.hpp"
 #include "hertz_type.hpp"
@@ -60,20 +60,20 @@ double krijt_dissipative_constant(double relaxation_time, const Pair& pair) {  /
   return a;
 }
 
-double effective_surface_energy_ratio(const KrijtParameters& p, double a, double delta) {  // K13 (14)
+double effective_surface_energy_ratio(const AdhesivePair& p, double a, double delta) {  // K13 (14)
   const contact::independent::Geometry g{p.effective_radius, p.effective_modulus};
   return contact::independent::effective_surface_energy(g, a, delta) / p.surface_energy;
 }
 
-double elastic_force(const KrijtParameters& p, double a, double delta) {  // K13 (2)
+double elastic_force(const AdhesivePair& p, double a, double delta) {  // K13 (2)
   return contact::independent::elastic_force({p.effective_radius, p.effective_modulus}, a, delta);
 }
 
-double bulk_dissipative_force(const KrijtParameters& p, double a, double rate) {  // K13 (19)
+double bulk_dissipative_force(const AdhesivePair& p, double a, double rate) {  // K13 (19)
   return 2.0 * p.dissipative_constant * p.effective_modulus * a * rate;
 }
 
-double contact_energy(const KrijtParameters& p, double a, double delta) {  // K13 (3) + (6)
+double contact_energy(const AdhesivePair& p, double a, double delta) {  // K13 (3) + (6)
   return contact::independent::elastic_energy({p.effective_radius, p.effective_modulus}, a, delta) +
          contact::independent::surface_energy(a, p.surface_energy);
 }
@@ -147,7 +147,7 @@ namespace {
 // krijt per DEM contact: K13 (2) + (19) with the contact radius a of the contact's state,
 // moved each step by krijt_crack_step; the contact forms as K13 appendix B has it and ends at
 // K13's run-away.
-class KrijtContact final : public CrackContactLaw {
+class KrijtContact final : public DemCrackLaw {
  public:
   explicit KrijtContact(const KrijtParameters& p)
       : p_(p), constants_(p), speed_(p.k) {}
@@ -267,28 +267,20 @@ class KrijtContact final : public CrackContactLaw {
 
 }  // namespace
 
-std::shared_ptr<const CrackContactLaw> krijt_crack_law(const Pair& pair, const CrackModelParameters& p, const Context&) {
-  return std::make_shared<KrijtContact>(detail::contact_parameters(pair, p, "krijt", p.k));
+Made<CrackContact> make_krijt(const Pair& pair, const CrackModelParameters& p, const Context&) {
+  const KrijtParameters k = detail::krijt_parameters(pair, p);
+  return detail::contact_model(k, p, CrackContact{k, std::make_shared<KrijtContact>(k)});
 }
 
-Model make_krijt(const Pair& pair, const CrackModelParameters& p, const Context&) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "krijt", p.k);
-  return detail::contact_model(k, p, CrackContact{k});
-}
-
-// jkr-viscoelastic per DEM contact: JKR's branch at the contact's R_eff (a few constants: made at
-// every call), which holds down to the fold delta_c or the pull-off point.
-std::shared_ptr<const ContactLaw> jkr_viscoelastic_contact(const Pair& pair, const ContactModelParameters& p,
-                                                           const Context& c) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic");
+// jkr-viscoelastic for the pair, and per DEM contact JKR's branch at the contact's R_eff (a few
+// constants: made at every call), which holds down to the fold delta_c or the pull-off point.
+Made<AdhesiveContact> make_jkr_viscoelastic(const Pair& pair, const ContactModelParameters& p, const Context& c) {
+  const AdhesivePair k = detail::adhesive_pair(pair, p, "jkr-viscoelastic");
   const auto at = [e = k.effective_modulus, gamma = k.surface_energy](double r) { return detail::JkrGeometry(r, e, gamma); };
-  return detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant,
-                                         detail::adhesive_release(c.end_rule));
-}
-
-Model make_jkr_viscoelastic(const Pair& pair, const ContactModelParameters& p, const Context&) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "jkr-viscoelastic");
-  return detail::contact_model(k, p, AdhesiveContact{k, jkr_geometry(k.effective_radius, k.effective_modulus, k.surface_energy)});
+  auto dem = detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant,
+                                             detail::adhesive_release(c.end_rule));
+  return detail::contact_model(
+      k, p, AdhesiveContact{k, jkr_geometry(k.effective_radius, k.effective_modulus, k.surface_energy), std::move(dem)});
 }
 
 }  // namespace bounce::models

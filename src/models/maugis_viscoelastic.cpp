@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "adhesive_contact_law.hpp"
+#include "adhesive_dem_law.hpp"
 #include "bounce/contact/surface_forces.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
@@ -51,7 +51,7 @@ class BranchesByRadius {
 // the attraction; Maugis-Dugdale's half-space picture (the gap r^2/(2R) of two paraboloids) needs
 // it small against R_eff. Beyond R_eff/10 the collision is refused (there the zone reaches across
 // the grain; slow impacts of 10 nm grains at z0 = 100 nm also ran out of the step budget).
-void check_zone_range(const KrijtParameters& k) {
+void check_zone_range(const AdhesivePair& k) {
   const double h0 = k.surface_energy / contact::surface::lennard_jones_max_tension(k.surface_energy, k.z0);
   if (h0 <= 0.1 * k.effective_radius) return;
   const double largest = k.z0 * 0.1 * k.effective_radius / h0;
@@ -61,16 +61,10 @@ void check_zone_range(const KrijtParameters& k) {
                                     largest, k.effective_radius, h0 / k.z0));
 }
 
-Model make_maugis_viscoelastic(const Pair& pair, const ContactModelParameters& p, const Context&) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "maugis-viscoelastic");
+// The branch for the pair, and per DEM contact the branch at its R_eff, held by a cache.
+Made<AdhesiveContact> make_maugis_viscoelastic(const Pair& pair, const ContactModelParameters& p, const Context& c) {
+  const AdhesivePair k = detail::adhesive_pair(pair, p, "maugis-viscoelastic");
   check_zone_range(k);
-  return detail::contact_model(
-      k, p, AdhesiveContact{k, maugis_geometry(k.effective_radius, k.effective_modulus, k.surface_energy, k.z0)});
-}
-
-std::shared_ptr<const ContactLaw> maugis_viscoelastic_contact(const Pair& pair, const ContactModelParameters& p,
-                                                              const Context& c) {
-  const KrijtParameters k = detail::contact_parameters(pair, p, "maugis-viscoelastic");
   auto branches = std::make_shared<const BranchesByRadius>(k.effective_modulus, k.surface_energy, k.z0);
   const auto at = [branches](double r) -> const AdhesiveGeometry& {
     // The geometry outlives the call: the cache keeps it (or, past its size, this thread's last).
@@ -78,8 +72,11 @@ std::shared_ptr<const ContactLaw> maugis_viscoelastic_contact(const Pair& pair, 
     held = branches->at(r);
     return *held;
   };
-  return detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant,
-                                         detail::adhesive_release(c.end_rule));
+  auto dem = detail::adhesive_branch_contact(at, k.effective_modulus, k.dissipative_constant,
+                                             detail::adhesive_release(c.end_rule));
+  return detail::contact_model(
+      k, p,
+      AdhesiveContact{k, maugis_geometry(k.effective_radius, k.effective_modulus, k.surface_energy, k.z0), std::move(dem)});
 }
 
 }  // namespace bounce::models

@@ -3,11 +3,7 @@
 namespace bounce::models {
 
 Engine engine_of(const NormalInteraction& normal) {
-  switch (normal.index()) {
-    case 0: return Engine::force_law;
-    case 1: return Engine::adhesive;
-    default: return Engine::crack;
-  }
+  return std::visit([](const auto& kind) { return engine_of<std::decay_t<decltype(kind)>>(); }, normal);
 }
 
 const NormalForceModel* Model::force_law() const {
@@ -15,10 +11,15 @@ const NormalForceModel* Model::force_law() const {
   return f ? f->force.get() : nullptr;
 }
 
-const KrijtParameters* Model::contact_parameters() const {
+const AdhesivePair* Model::contact_parameters() const {
   if (const auto* a = std::get_if<AdhesiveContact>(&normal)) return &a->parameters;
   if (const auto* c = std::get_if<CrackContact>(&normal)) return &c->parameters;
   return nullptr;
+}
+
+const KrijtParameters* Model::crack_parameters() const {
+  const auto* c = std::get_if<CrackContact>(&normal);
+  return c ? &c->parameters : nullptr;
 }
 
 }  // namespace bounce::models

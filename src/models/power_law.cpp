@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "bounce/contact/hertz.hpp"
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "factories.hpp"
 
@@ -47,7 +47,7 @@ class PowerLawForce final : public NormalForceModel {
 };
 
 // The same law per DEM contact, with the contact's m_eff.
-class PowerLawContact final : public ContactLaw {
+class PowerLawContact final : public DemLaw {
  public:
   explicit PowerLawContact(const PowerLawParameters& p) : p_(p) {}
   double force(const ContactGeometry& g, double xi, double rate) const override {
@@ -61,18 +61,15 @@ class PowerLawContact final : public ContactLaw {
 
 }  // namespace
 
-std::shared_ptr<const ContactLaw> power_law_contact(const Pair&, const PowerLawParameters& p, const Context&) {
-  return std::make_shared<PowerLawContact>(p);
-}
-
 std::unique_ptr<NormalForceModel> make_power_law_force(const PowerLawParameters& parameters, double effective_mass,
                                                        double equivalent_radius) {
   return std::make_unique<PowerLawForce>(parameters, effective_mass, equivalent_radius);
 }
 
-Model make_power_law(const Pair& pair, const PowerLawParameters& p, const Context&) {
-  Model m;
-  m.normal = ForceLaw{make_power_law_force(p, pair.effective_mass(), pair.effective_radius())};
+Made<ForceLaw> make_power_law(const Pair& pair, const PowerLawParameters& p, const Context&) {
+  Made<ForceLaw> m;
+  m.normal = ForceLaw{make_power_law_force(p, pair.effective_mass(), pair.effective_radius()),
+                      std::make_shared<PowerLawContact>(p)};
   return m;
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 #include <fmt/format.h>
@@ -32,9 +33,8 @@ Traits force_law(bool master_curve, Adhesion adhesion = Adhesion::negligible) {
   t.docs = "viscoelastic.md";
   return t;
 }
-Traits adhesive(Engine engine, Adhesion adhesion, std::vector<EndRule> end_rules, std::string why) {
+Traits adhesive(Adhesion adhesion, std::vector<EndRule> end_rules, std::string why) {
   Traits t;
-  t.engine = engine;
   t.adhesive = true;
   t.adhesion = adhesion;
   t.end_rules = std::move(end_rules);
@@ -64,7 +64,7 @@ Traits shifted_traits() {
   return t;
 }
 Traits adhesive_viscoelastic_traits() {
-  Traits t = adhesive(Engine::force_law, Adhesion::weak, {EndRule::overlap},
+  Traits t = adhesive(Adhesion::weak, {EndRule::overlap},
                       "overlap (an adhesive contact ends where it breaks, not where the force first vanishes)");
   t.closed_forms.jkr = true;
   t.closed_forms.bp04_weak = true;
@@ -72,7 +72,7 @@ Traits adhesive_viscoelastic_traits() {
   return t;
 }
 Traits jkr_viscoelastic_traits() {
-  Traits t = adhesive(Engine::adhesive, Adhesion::jkr, {EndRule::overlap, EndRule::fold, EndRule::pull_off},
+  Traits t = adhesive(Adhesion::jkr, {EndRule::overlap, EndRule::fold, EndRule::pull_off},
                       "overlap (the fold), fold or pull-off");
   t.closed_forms.jkr = true;
   t.stock_lammps = StockLammps::jkr;
@@ -81,7 +81,7 @@ Traits jkr_viscoelastic_traits() {
   return t;
 }
 Traits krijt_traits() {
-  Traits t = adhesive(Engine::crack, Adhesion::jkr, {EndRule::overlap},
+  Traits t = adhesive(Adhesion::jkr, {EndRule::overlap},
                       "overlap (an adhesive contact ends where it breaks, here where K13's crack law ends it)");
   t.closed_forms.jkr = true;
   t.comparisons = {{1, "K13: adhesion, viscous crack, bulk damping, plastic", "gamma,tvis,yield", std::nullopt}};
@@ -91,43 +91,43 @@ Traits krijt_traits() {
 // No pull-off end: toward DMT the least force lies at touching, inside the attraction's range,
 // past the snap-on; a release there would hand the pair the zone's energy (e > 1).
 Traits maugis_viscoelastic_traits() {
-  return adhesive(Engine::adhesive, Adhesion::maugis, {EndRule::overlap, EndRule::fold},
+  return adhesive(Adhesion::maugis, {EndRule::overlap, EndRule::fold},
                   "overlap or fold (the Maugis jump-off; no pull-off: toward DMT the least force lies inside the "
                   "attraction's range)");
 }
 
 // The checked-in table: one row per model (keyword, summary, references, traits, own
-// parameters, factory, what fit fits, DEM laws). To add a model, write src/models/<model>.cpp
+// parameters and their rules, factory, what fit fits). To add a model, write src/models/<model>.cpp
 // with its factory (declared in factories.hpp) and add its row here: the CLI, Python and
 // docs/models.md take it from this table.
 std::vector<ModelRow> builtin_rows() {
   return {
       model_row("hertz", "elastic spheres, no dissipation", "BP04 (8.24), BSHP96 (14)", hertz_traits(), no_fields(),
-                TypedFactories<NoParameters>{&make_hertz, &hertz_contact}, {"yield"}),
+                &make_hertz, {"yield"}),
       model_row("viscoelastic", "Hertz plus the quasi-static viscous force (3/2) A rho sqrt(xi) xi'",
                 "BP04 (8.42), BSHP96 (24)", viscoelastic_traits(), viscous_fields(),
-                TypedFactories<ViscousParameters>{&make_viscoelastic, &viscoelastic_contact}, {"A"}),
+                &make_viscoelastic, {"A"}),
       model_row("viscoelastic-shifted", "Hertz law at the shifted overlap xi + A xi', clamped at zero", "BSHP96 (25)",
                 shifted_traits(), viscous_fields(),
-                TypedFactories<ViscousParameters>{&make_viscoelastic_shifted, &viscoelastic_shifted_contact}, {"A"}),
+                &make_viscoelastic_shifted, {"A"}),
       model_row("power-law", "F = m (D1 xi^alpha + D2 xi^gamma xi'^beta)", "BP04 (8.63)-(8.69)",
                 force_law(false, Adhesion::unchecked), power_law_fields(),
-                TypedFactories<PowerLawParameters>{&make_power_law, &power_law_contact}),
+                &make_power_law),
       model_row("adhesive-viscoelastic", "BP04's quasi-static adhesive force (8.56) with its dissipation (8.57)",
                 "BP04 (8.56)-(8.58), docs/adhesive.md", adhesive_viscoelastic_traits(), adhesive_viscous_fields(),
-                TypedFactories<AdhesiveViscousParameters>{&make_adhesive_viscoelastic, &adhesive_viscoelastic_contact},
+                &make_adhesive_viscoelastic,
                 {"gamma", "tvis", "yield"}),
       model_row("jkr-viscoelastic", "contact radius on the JKR equilibrium (instantaneous crack) plus the bulk force",
                 "K13 (8), (9), (19), (20)", jkr_viscoelastic_traits(), contact_fields(),
-                TypedFactories<ContactModelParameters>{&make_jkr_viscoelastic, &jkr_viscoelastic_contact},
+                &make_jkr_viscoelastic,
                 {"gamma", "tvis", "yield"}),
       model_row("krijt", "K13's dynamic contact: independent a and delta, viscoelastic crack, bulk damping",
                 "K13 (2), (14)-(21), appendices B, C", krijt_traits(), crack_fields(),
-                TypedFactories<CrackModelParameters>{&make_krijt, {}, &krijt_crack_law}, {"gamma", "tvis", "yield"}),
+                &make_krijt, {"gamma", "tvis", "yield"}),
       model_row("maugis-viscoelastic", "contact on the Maugis-Dugdale branch (any Tabor parameter) plus the bulk force",
                 "Maugis 1992 (MD1)-(MD3), K13 (19), (20), docs/adhesive.md", maugis_viscoelastic_traits(),
                 contact_fields(),
-                TypedFactories<ContactModelParameters>{&make_maugis_viscoelastic, &maugis_viscoelastic_contact},
+                &make_maugis_viscoelastic,
                 {"gamma", "tvis", "yield"}),
   };
 }
@@ -274,11 +274,11 @@ ModelContext context(const ModelRow& row, const Pair& pair, const Parameters& p)
 
 Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
   const ModelRow& row = model_registry().at(name);
+  for (const ParameterRule& rule : row.rules) rule.check(p, "model " + row.name);
   const ModelContext c = context(row, pair, p);
   Model m = row.factory(pair, p, c);
-  if (engine_of(m.normal) != row.traits.engine) {
-    throw std::logic_error("model " + row.name + ": its factory made another kind of normal interaction than it declares");
-  }
+  const bool dem = std::visit([](const auto& kind) { return kind.dem != nullptr; }, m.normal);
+  if (!dem) throw std::logic_error("model " + row.name + ": its factory made no DEM law");
   m.name = row.name;
   m.traits = row.traits;
   m.end_rule = c.end_rule;
@@ -287,23 +287,19 @@ Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
   return m;
 }
 
-DemModel make_contact_law(const Pair& pair, std::string_view name, const Parameters& p) {
-  const ModelRow& row = model_registry().at(name);
-  if (!row.dem()) {
-    std::vector<std::string> with;
-    for (const ModelRow& r : model_registry().rows()) {
-      if (r.dem()) with.push_back(r.name);
-    }
-    throw InvalidArgument("model", row.name, fmt::format("a model with a DEM contact law: {}", fmt::join(with, ", ")));
-  }
-  const ModelContext c = context(row, pair, p);
-  DemModel m;
-  m.name = row.name;
-  m.end_rule = c.end_rule;
-  if (row.contact_law) m.normal = row.contact_law(pair, p, c);
-  if (row.crack_law) m.crack = row.crack_law(pair, p, c);
-  m.tangential = tangential_model(pair, p);
-  return m;
+DemModel make_dem_model(const Pair& pair, std::string_view name, const Parameters& p) {
+  Model m = make_model(pair, name, p);
+  DemModel out;
+  out.name = m.name;
+  out.end_rule = m.end_rule;
+  out.tangential = m.tangential;
+  std::visit(
+      [&](const auto& kind) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(kind)>, CrackContact>) out.crack = kind.dem;
+        else out.normal = kind.dem;
+      },
+      m.normal);
+  return out;
 }
 
 Model make_model(const Pair& pair, std::string_view name, const ParameterInputs& inputs) {

@@ -4,7 +4,6 @@
 #include <string>
 
 #include "bounce/contact/hertz.hpp"
-#include "bounce/models/contact_law.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "bounce/pair/mixing.hpp"
 #include "factories.hpp"
@@ -34,10 +33,12 @@ class ViscoelasticForce final : public detail::HertzTypeForce {
   std::string name_;
 };
 
-Model hertz_type(const Pair& pair, const Context& c, double a, std::string_view name) {
-  Model m;
+// The law for the pair (C0 of its shape) and per DEM contact (C0 = rho of each contact's R_eff).
+Made<ForceLaw> hertz_type(const Pair& pair, const Context& c, double a, std::string_view name) {
+  Made<ForceLaw> m;
   const HertzGeometry geometry = detail::hertz_geometry(pair, c.shape);
-  m.normal = ForceLaw{make_viscoelastic_force(geometry, a, name)};
+  m.normal = ForceLaw{make_viscoelastic_force(geometry, a, name),
+                      std::make_shared<detail::HertzTypeContact<viscoelastic_force>>(pair.effective_modulus(), a)};
   m.hertz = HertzScaling{geometry.force_constant, a};
   return m;
 }
@@ -49,20 +50,13 @@ std::unique_ptr<NormalForceModel> make_viscoelastic_force(const HertzGeometry& g
   return std::make_unique<ViscoelasticForce>(geometry, dissipative_constant, name);
 }
 
-Model make_hertz(const Pair& pair, const NoParameters&, const Context& c) { return hertz_type(pair, c, 0.0, "hertz"); }
-
-std::shared_ptr<const ContactLaw> hertz_contact(const Pair& pair, const NoParameters&, const Context&) {
-  return std::make_shared<detail::HertzTypeContact<viscoelastic_force>>(pair.effective_modulus(), 0.0);
+Made<ForceLaw> make_hertz(const Pair& pair, const NoParameters&, const Context& c) {
+  return hertz_type(pair, c, 0.0, "hertz");
 }
 
-std::shared_ptr<const ContactLaw> viscoelastic_contact(const Pair& pair, const ViscousParameters& p, const Context&) {
-  return std::make_shared<detail::HertzTypeContact<viscoelastic_force>>(
-      pair.effective_modulus(), detail::dissipative_constant(pair, p, "viscoelastic"));
-}
-
-Model make_viscoelastic(const Pair& pair, const ViscousParameters& p, const Context& c) {
-  const double a = detail::dissipative_constant(pair, p, "viscoelastic");
-  Model m = hertz_type(pair, c, a, "viscoelastic");
+Made<ForceLaw> make_viscoelastic(const Pair& pair, const ViscousParameters& p, const Context& c) {
+  const double a = detail::dissipative_constant(pair, p);
+  Made<ForceLaw> m = hertz_type(pair, c, a, "viscoelastic");
   m.dissipative_constant = a;
   m.viscous_time = detail::viscous_time(pair, p, a);
   return m;

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "bounce/contact/hertz.hpp"
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "bounce/pair/mixing.hpp"
 #include "factories.hpp"
@@ -33,22 +33,17 @@ class ShiftedViscoelasticForce final : public detail::HertzTypeForce {
 
 }  // namespace
 
-std::shared_ptr<const ContactLaw> viscoelastic_shifted_contact(const Pair& pair, const ViscousParameters& p,
-                                                               const Context&) {
-  return std::make_shared<detail::HertzTypeContact<shifted_force>>(
-      pair.effective_modulus(), detail::dissipative_constant(pair, p, "viscoelastic-shifted"));
-}
-
 std::unique_ptr<NormalForceModel> make_shifted_viscoelastic_force(const HertzGeometry& geometry,
                                                                   double dissipative_constant) {
   return std::make_unique<ShiftedViscoelasticForce>(geometry, dissipative_constant);
 }
 
-Model make_viscoelastic_shifted(const Pair& pair, const ViscousParameters& p, const Context& c) {
-  const double a = detail::dissipative_constant(pair, p, "viscoelastic-shifted");
+Made<ForceLaw> make_viscoelastic_shifted(const Pair& pair, const ViscousParameters& p, const Context& c) {
+  const double a = detail::dissipative_constant(pair, p);
   const HertzGeometry geometry = detail::hertz_geometry(pair, c.shape);
-  Model m;
-  m.normal = ForceLaw{make_shifted_viscoelastic_force(geometry, a)};
+  Made<ForceLaw> m;
+  m.normal = ForceLaw{make_shifted_viscoelastic_force(geometry, a),
+                      std::make_shared<detail::HertzTypeContact<shifted_force>>(pair.effective_modulus(), a)};
   m.hertz = HertzScaling{geometry.force_constant, a};
   m.dissipative_constant = a;
   m.viscous_time = detail::viscous_time(pair, p, a);

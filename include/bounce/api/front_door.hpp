@@ -23,7 +23,7 @@
 #include "bounce/analysis/tables.hpp"
 #include "bounce/core/parameters.hpp"
 #include "bounce/core/record.hpp"
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 #include "bounce/models/model.hpp"
 #include "bounce/pair/pair.hpp"
 
@@ -176,11 +176,11 @@ std::vector<BatchEntry> read_fit_manifest(std::string_view text, const std::stri
 const CommandSpec& pair_coeff_command();
 /// The contact law of one pair of atom types from its pair_coeff inputs, checked like the
 /// CLI's (InvalidArgument naming the input).
-models::DemModel contact_law(const Inputs& inputs);
+models::DemModel dem_model(const Inputs& inputs);
 /// LAMMPS's `fix wall/bounce`: the same for atoms against a flat wall, which is body 2 (an
 /// elastic wall of material2, E2, nu2, gamma2, or rigid_wall).
 const CommandSpec& fix_wall_command();
-models::DemModel wall_contact_law(const Inputs& inputs);
+models::DemModel wall_dem_model(const Inputs& inputs);
 
 /// `bounce lammps`: the stock `pair_style granular` lines that best represent a model for a
 /// pair (eta_n0 = 2 A E*/m_eff, gamma_LAMMPS = w/2, limit_damping for the force rule), with

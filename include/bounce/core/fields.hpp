@@ -10,6 +10,8 @@
 //       {catalogue::dissipative_constant(), &ViscousParameters::dissipative_constant}, ...};
 //   fields.specs();      // the row's parameters
 //   fields.read(bound);  // the struct
+// A rule between fields that no single spec states ("one of A, eta1 and eta2, or T_vis") is
+// declared with the table too: FieldTable{...}.with(ParameterRule{...}).
 
 #include <functional>
 #include <initializer_list>
@@ -50,6 +52,15 @@ class FieldTable {
  public:
   FieldTable(std::initializer_list<Field<S>> fields) : fields_(fields) {}
 
+  /// The table with a rule between its fields (ParameterRule: checked once, where a model is
+  /// made from the bound values).
+  FieldTable with(ParameterRule rule) const {
+    FieldTable out = *this;
+    out.rules_.push_back(std::move(rule));
+    return out;
+  }
+  const std::vector<ParameterRule>& rules() const noexcept { return rules_; }
+
   /// The specs, in the table's order.
   std::vector<ParameterSpec> specs() const {
     std::vector<ParameterSpec> out;
@@ -70,6 +81,7 @@ class FieldTable {
 
  private:
   std::vector<Field<S>> fields_;
+  std::vector<ParameterRule> rules_;
 };
 
 }  // namespace bounce

@@ -136,6 +136,22 @@ class Parameters {
   ParameterInputs typed_;  // as given, before conversion
 };
 
+/// A constraint between parameters that no single spec states ("one of A, eta1 and eta2, or
+/// T_vis", "krijt needs T_vis"): which of its alternatives, each a set of parameters given
+/// together, may or must be given. Declared beside a parameter table (FieldTable::with) and
+/// checked once, where a model is made from its bound values.
+struct ParameterRule {
+  std::vector<std::vector<std::string>> alternatives;
+  bool exclusive = true;  ///< at most one alternative given
+  bool required = true;   ///< at least one given
+  std::string expected;   ///< what a refusal expects: "one of A, the viscosities eta1 and eta2, or T_vis"
+
+  /// InvalidArgument "NAME = VALUE is invalid: expected ..." for the first parameter that breaks
+  /// it, `owner` ("model viscoelastic") added: one of an alternative given without the others,
+  /// a second alternative (exclusive), or none (required; named by the first alternative's).
+  void check(const Parameters& p, std::string_view owner) const;
+};
+
 /// Checks every input against the spec of its name: its kind (text is read as a number,
 /// "R1,R2" as numbers, "inf" where allowed), its range or choices. A name without a spec
 /// is an InvalidArgument naming it and listing what `owner` ("model viscoelastic",

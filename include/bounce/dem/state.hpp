@@ -4,7 +4,7 @@
 // written to and read from a flat array (LAMMPS's per-contact history, restart files), how it looks
 // from the other body, and which laws use it.
 
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 
 namespace bounce::dem {
 

@@ -20,7 +20,7 @@
 
 #include <string>
 
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 
 namespace bounce::dem {
 
@@ -48,12 +48,12 @@ struct StepCheck {
 bool check_due(double overlap, double& checked);
 
 /// The check of a law's contact at overlap xi > 0 and rate xi' (q: the rate's weight above).
-StepCheck check_step(const models::ContactLaw& law, const models::ContactGeometry& g, double overlap, double rate,
+StepCheck check_step(const models::DemLaw& law, const models::ContactGeometry& g, double overlap, double rate,
                      double dt, double q);
 
 /// The check of a crack law's contact (krijt) of state s, whose force there is F_E + D xi'.
-StepCheck check_crack_step(const models::CrackContactLaw& law, const models::ContactGeometry& g, double overlap,
-                           const models::CrackState& s, const models::CrackContactLaw::Force& force, double dt, double q);
+StepCheck check_crack_step(const models::DemCrackLaw& law, const models::ContactGeometry& g, double overlap,
+                           const models::CrackState& s, const models::DemCrackLaw::Force& force, double dt, double q);
 
 }  // namespace bounce::dem
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "bounce/dem/step_check.hpp"
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 
 namespace bounce::dem {
 

@@ -50,12 +50,12 @@ CollisionOutcome integrate_krijt_collision(const models::KrijtParameters& p, dou
 /// bulk_dissipated. Sticking: the mechanical energy below the contact's energy at the release
 /// (it never increases). Integrated with dopri5 (not stiff). p gives m*, E*, A (and R, gamma for
 /// the scales).
-CollisionOutcome integrate_adhesive_collision(const models::KrijtParameters& p, const models::AdhesiveGeometry& geometry,
+CollisionOutcome integrate_adhesive_collision(const models::AdhesivePair& p, const models::AdhesiveGeometry& geometry,
                                               double speed, const AdhesiveCollisionOptions& options = {});
 
 /// K13's equations with a on the JKR equilibrium (beta = 1): integrate_adhesive_collision on JKR's
 /// branch (snap-on at delta = 0, release at delta_c or the pull-off point).
-CollisionOutcome integrate_jkr_viscoelastic_collision(const models::KrijtParameters& p, double speed,
+CollisionOutcome integrate_jkr_viscoelastic_collision(const models::AdhesivePair& p, double speed,
                                                       const AdhesiveCollisionOptions& options = {});
 
 }  // namespace bounce::dynamics

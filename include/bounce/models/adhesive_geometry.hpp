@@ -2,7 +2,7 @@
 // The geometry of an adhesive contact held on its equilibrium branch (a crack with no time of its
 // own): JKR's (K13 (8), (9), (3) + (6)) or Maugis-Dugdale's (contact/maugis_branch.hpp). A
 // strategy: the collision engine of the models that hold their contact there (dynamics,
-// integrate_adhesive_collision) and their DEM laws (contact_law.hpp) ask it the same questions.
+// integrate_adhesive_collision) and their DEM laws (dem_law.hpp) ask it the same questions.
 //
 // On the branch stable under displacement control the state is a function of the overlap delta:
 // contact radius, force, energies. An approaching pair jumps onto it at snap_overlap() (JKR: when

@@ -8,19 +8,15 @@
 // here as plain functions of the state; dynamics/adhesive_collision.hpp
 // integrates it.
 
+#include "bounce/models/adhesive_pair.hpp"
 #include "bounce/pair/pair.hpp"
 
 namespace bounce::models {
 
-struct KrijtParameters {
-  double effective_radius = 0.0;       ///< R [m]
-  double effective_modulus = 0.0;      ///< E* [Pa]
-  double effective_mass = 0.0;         ///< m* [kg]
-  double surface_energy = 0.0;         ///< gamma [J/m^2]
-  double relaxation_time = 0.0;        ///< T_vis [s]
-  double dissipative_constant = 0.0;   ///< A [s] of (19)
-  double z0 = 0.2e-9;                  ///< [m]; sigma0 = gamma / z0
-  double k = 0.02;                     ///< ratio of relaxed to instantaneous modulus
+/// K13's parameters: an adhesive pair's (adhesive_pair.hpp) and its crack law's.
+struct KrijtParameters : AdhesivePair {
+  double relaxation_time = 0.0;  ///< T_vis [s]
+  double k = 0.02;               ///< ratio of relaxed to instantaneous modulus
 
   /// c = E* gamma / (sigma0^2 T_vis) = E* z0^2 / (gamma T_vis) [m/s], K13 (16).
   double crack_speed_scale() const;
@@ -32,12 +28,12 @@ struct KrijtParameters {
 double krijt_dissipative_constant(double relaxation_time, const Pair& pair);
 
 /// K13 (14): beta = G_eff / gamma = E* (a^2 - delta R)^2 / (2 pi a R^2 gamma).
-double effective_surface_energy_ratio(const KrijtParameters& p, double contact_radius, double approach);
+double effective_surface_energy_ratio(const AdhesivePair& p, double contact_radius, double approach);
 /// K13 (2) and (19).
-double elastic_force(const KrijtParameters& p, double contact_radius, double approach);
-double bulk_dissipative_force(const KrijtParameters& p, double contact_radius, double rate);
+double elastic_force(const AdhesivePair& p, double contact_radius, double approach);
+double bulk_dissipative_force(const AdhesivePair& p, double contact_radius, double rate);
 /// K13 (3) + (6): U_E + U_S.
-double contact_energy(const KrijtParameters& p, double contact_radius, double approach);
+double contact_energy(const AdhesivePair& p, double contact_radius, double approach);
 
 /// K13 appendix B: at first contact delta = 0 and the contact grows at a crack
 /// speed that diverges for beta -> k. The integration starts where G_eff = 1.01 k

@@ -9,14 +9,22 @@
 //   AdhesiveContact  a contact held on an adhesive equilibrium branch (adhesive_geometry.hpp: JKR,
 //                    Maugis-Dugdale) with the bulk damping of K13 (19): dopri5
 //   CrackContact     K13's contact whose radius moves by its crack law (krijt.hpp): the stiff engine
+// A model's factory makes one of them (its type is the model's engine) and, in it, the same law
+// as a DEM law (dem_law.hpp) whose radii and masses are given per contact: two shapes of one
+// law, because a collision's is bound to one pair (its engines ask for a reference overlap,
+// the sign of the force for event location, master-curve scaling) while a DEM has grains of
+// many sizes per pair of materials. Both evaluate the same formula, written once.
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "bounce/models/adhesive_geometry.hpp"
+#include "bounce/models/adhesive_pair.hpp"
+#include "bounce/models/dem_law.hpp"
 #include "bounce/models/end_rule.hpp"
 #include "bounce/models/krijt.hpp"
 #include "bounce/models/normal_force.hpp"
@@ -24,8 +32,8 @@
 
 namespace bounce::models {
 
-/// How a model's collision is integrated; the configured Model's normal interaction is of the
-/// matching kind (make_model checks it).
+/// How a model's collision is integrated: the kind of its normal interaction (engine_of), which
+/// a registry row reads from its factory's type (model_row), not from a declaration.
 enum class Engine {
   force_law,  ///< ForceLaw
   adhesive,   ///< AdhesiveContact
@@ -68,7 +76,7 @@ struct Comparison {
 /// What a model declares about itself (its registry row's): the analysis, the front door and the
 /// front ends read it, and nothing infers it from anything else.
 struct Traits {
-  Engine engine = Engine::force_law;
+  Engine engine = Engine::force_law;  ///< set by model_row from the factory's kind
   /// The contact_end rules it takes; the first is the default.
   std::vector<EndRule> end_rules = {EndRule::overlap, EndRule::force};
   /// Why the other rules are not taken (the end of a refusal's "expected ...").
@@ -91,22 +99,50 @@ struct HertzScaling {
   double dissipative_constant = 0.0;  ///< A [s]
 };
 
-/// The normal interaction of each kind.
+/// The normal interaction of each kind: what its collision engine integrates for the pair, and
+/// `dem`, the same law for a DEM contact (every model has one).
 struct ForceLaw {
   std::shared_ptr<const NormalForceModel> force;
+  std::shared_ptr<const DemLaw> dem;
 };
 struct AdhesiveContact {
-  KrijtParameters parameters;  ///< the pair (R, E*, m*, gamma) and the bulk damping A of K13 (19)
+  AdhesivePair parameters;  ///< the pair (R, E*, m*, gamma), the bulk damping A of K13 (19), z0
   std::shared_ptr<const AdhesiveGeometry> geometry;
+  std::shared_ptr<const DemLaw> dem;
 };
 struct CrackContact {
   KrijtParameters parameters;
+  std::shared_ptr<const DemCrackLaw> dem;
 };
 using NormalInteraction = std::variant<ForceLaw, AdhesiveContact, CrackContact>;
 /// The engine a normal interaction is integrated by.
 Engine engine_of(const NormalInteraction& normal);
+template <class Kind>
+constexpr Engine engine_of() {
+  if constexpr (std::is_same_v<Kind, ForceLaw>) return Engine::force_law;
+  else if constexpr (std::is_same_v<Kind, AdhesiveContact>) return Engine::adhesive;
+  else {
+    static_assert(std::is_same_v<Kind, CrackContact>, "a kind of NormalInteraction");
+    return Engine::crack;
+  }
+}
 
-struct Model {
+/// What the analysis reads of a model beside its normal interaction (its factory sets it).
+struct ModelPhysics {
+  std::optional<HertzScaling> hertz;           ///< Hertz-type forces: kappa, g*, master curves
+  std::optional<double> dissipative_constant;  ///< A [s], where the model has one
+  double viscous_time = 0.0;   ///< viscous relaxation time, for BSHP96 (B12) / BP04 (8.26)
+  double z0 = 0.2e-9;          ///< equilibrium separation [m] of the Tabor parameter K13 (11)
+};
+
+/// What a model's factory makes: its normal interaction, of the kind that is its engine, and
+/// the rest of its physics.
+template <class Kind>
+struct Made : ModelPhysics {
+  Kind normal;
+};
+
+struct Model : ModelPhysics {
   std::string name;  ///< the registry keyword
   Traits traits;     ///< as the row declares them
 
@@ -117,16 +153,12 @@ struct Model {
   std::optional<double> yield_strength;  ///< Y [Pa]: Thornton-Ning losses, K13 (28)-(30)
   std::optional<TangentialModel> tangential;  ///< with a friction coefficient: oblique collisions
 
-  // What the analysis reports and checks.
-  std::optional<HertzScaling> hertz;           ///< Hertz-type forces: kappa, g*, master curves
-  std::optional<double> dissipative_constant;  ///< A [s], where the model has one
-  double viscous_time = 0.0;   ///< viscous relaxation time, for BSHP96 (B12) / BP04 (8.26)
-  double z0 = 0.2e-9;          ///< equilibrium separation [m] of the Tabor parameter K13 (11)
-
   /// The force law (ForceLaw models), else nullptr.
   const NormalForceModel* force_law() const;
-  /// K13's parameters of a contact model (AdhesiveContact, CrackContact), else nullptr.
-  const KrijtParameters* contact_parameters() const;
+  /// The adhesive pair of a contact model (AdhesiveContact, CrackContact), else nullptr.
+  const AdhesivePair* contact_parameters() const;
+  /// K13's parameters of a crack model (CrackContact), else nullptr.
+  const KrijtParameters* crack_parameters() const;
 };
 
 }  // namespace bounce::models

@@ -5,25 +5,26 @@
 //
 // One keyword <-> one row <-> one factory, in the file of its physics (src/models/*.cpp:
 // hertz with viscoelastic, jkr-viscoelastic with krijt). A row declares what the model is
-// (Traits: its engine, end rules, adhesion checks, closed forms, ...) and its own parameters, as
-// the field table of its parameter struct (core/fields.hpp, model_parameters.hpp); the registry
-// adds the parameters every model shares (contact_end, yield, the tangential law, method) and
-// those its traits call for (curvature radii for convex bodies; tolerance for force laws;
-// adhesive_tolerance for the contact engines, stiff_engine for the crack's). To add a model:
-// write its file with a factory that turns its parameter struct into a Model (model.hpp),
-// declare the factory in src/models/factories.hpp and add its row (model_row) to the table in
-// src/models/registry.cpp (or, outside the library, model_registry().add(row)).
+// (Traits: end rules, adhesion checks, closed forms, ...; its engine is the kind its factory
+// makes) and its own parameters, as the field table of its parameter struct with the rules
+// between them (core/fields.hpp, model_parameters.hpp); the registry adds the parameters every
+// model shares (contact_end, yield, the tangential law, method) and those its traits call for
+// (curvature radii for convex bodies; tolerance for force laws; adhesive_tolerance for the
+// contact engines, stiff_engine for the crack's). To add a model: write its file with a factory
+// that turns its parameter struct into Made<Kind> (model.hpp: the collision law and the same law
+// for DEM contacts), declare the factory in src/models/factories.hpp and add its row (model_row)
+// to the table in src/models/registry.cpp (or, outside the library, model_registry().add(row)).
 
 #include <deque>
 #include <functional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "bounce/core/fields.hpp"
 #include "bounce/core/parameters.hpp"
-#include "bounce/models/contact_law.hpp"
 #include "bounce/models/model.hpp"
 #include "bounce/models/model_parameters.hpp"
 #include "bounce/pair/pair.hpp"
@@ -34,11 +35,6 @@ namespace bounce::models {
 /// slots, end rule, yield and tangential law, are filled by make_model afterwards). model_row
 /// makes one from a factory of the model's parameter struct.
 using ModelFactory = std::function<Model(const Pair& pair, const Parameters& parameters, const ModelContext& context)>;
-/// Makes the model's normal law as a DEM contact law (contact_law.hpp) for a pair of materials.
-using ContactLawFactory = std::function<std::shared_ptr<const ContactLaw>(const Pair& pair, const Parameters& parameters,
-                                                                          const ModelContext& context)>;
-using CrackLawFactory = std::function<std::shared_ptr<const CrackContactLaw>(
-    const Pair& pair, const Parameters& parameters, const ModelContext& context)>;
 
 struct ModelRow {
   std::string name;        ///< the keyword (`--model NAME`, `bounce.Model(NAME)`)
@@ -50,41 +46,38 @@ struct ModelRow {
   /// What `bounce fit` fits by default (parameters with a fit grid: the model's, the shared
   /// yield, the pair's gamma); empty: the user names them.
   std::vector<std::string> fit = {};
-  /// The model as a DEM contact law (LAMMPS's pair_style bounce); empty: not available.
-  ContactLawFactory contact_law = {};
-  /// Or as one with a contact radius of its own (krijt).
-  CrackLawFactory crack_law = {};
-  bool dem() const { return contact_law || crack_law; }
+  /// Its parameter table's rules between parameters, checked where the model is made.
+  std::vector<ParameterRule> rules = {};
 };
 
-/// The factories of a model whose parameters are the struct S of a field table.
-template <class S>
-struct TypedFactories {
-  std::function<Model(const Pair&, const S&, const ModelContext&)> model;
-  std::function<std::shared_ptr<const ContactLaw>(const Pair&, const S&, const ModelContext&)> contact_law = {};
-  std::function<std::shared_ptr<const CrackContactLaw>(const Pair&, const S&, const ModelContext&)> crack_law = {};
+namespace detail {
+template <class T>
+struct MadeKind;
+template <class Kind>
+struct MadeKind<Made<Kind>> {
+  using type = Kind;
 };
+}  // namespace detail
 
-/// A row whose own parameters are the fields of `fields`: the table gives the row's specs, and
-/// each factory receives the struct read from the bound values.
-template <class S>
+/// A row whose own parameters are the fields of `fields` (its specs and rules): `make(pair, S,
+/// context)` returns Made<Kind>, the model's physics, whose Kind (ForceLaw, AdhesiveContact,
+/// CrackContact) sets the row's engine. Its normal interaction carries the same law as a DEM
+/// law: one factory serves collisions and DEM codes.
+template <class S, class Make>
 ModelRow model_row(std::string name, std::string summary, std::string references, Traits traits,
-                   const FieldTable<S>& fields, TypedFactories<S> make, std::vector<std::string> fit = {}) {
+                   const FieldTable<S>& fields, Make make, std::vector<std::string> fit = {}) {
+  using Result = std::invoke_result_t<Make, const Pair&, const S&, const ModelContext&>;
+  using Kind = typename detail::MadeKind<Result>::type;
+  traits.engine = engine_of<Kind>();
   ModelRow row{std::move(name), std::move(summary), std::move(references), std::move(traits), fields.specs(), {},
-               std::move(fit)};
-  row.factory = [fields, f = make.model](const Pair& pair, const Parameters& p, const ModelContext& c) {
-    return f(pair, fields.read(p), c);
+               std::move(fit), fields.rules()};
+  row.factory = [fields, make](const Pair& pair, const Parameters& p, const ModelContext& c) {
+    Made<Kind> made = make(pair, fields.read(p), c);
+    Model m;
+    static_cast<ModelPhysics&>(m) = made;
+    m.normal = std::move(made.normal);
+    return m;
   };
-  if (make.contact_law) {
-    row.contact_law = [fields, f = make.contact_law](const Pair& pair, const Parameters& p, const ModelContext& c) {
-      return f(pair, fields.read(p), c);
-    };
-  }
-  if (make.crack_law) {
-    row.crack_law = [fields, f = make.crack_law](const Pair& pair, const Parameters& p, const ModelContext& c) {
-      return f(pair, fields.read(p), c);
-    };
-  }
   return row;
 }
 
@@ -128,7 +121,7 @@ Model make_model(const Pair& pair, std::string_view name, const ParameterInputs&
 /// The model `name` as a DEM contact law for a pair of materials (the pair's radii and masses
 /// are replaced per contact): its normal law, end rule and tangential law. InvalidArgument
 /// ("model", …) for a model without one.
-DemModel make_contact_law(const Pair& pair, std::string_view name, const Parameters& parameters);
+DemModel make_dem_model(const Pair& pair, std::string_view name, const Parameters& parameters);
 
 /// BP04 (8.38): A = (1/3) (3 eta2 - eta1)^2 / (3 eta2 + 2 eta1) (1 - nu^2)(1 - 2 nu) / (E nu^2).
 double dissipative_constant_from_viscosities(double shear_viscosity, double bulk_viscosity,

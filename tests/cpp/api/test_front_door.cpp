@@ -36,6 +36,19 @@ class LinearSpring final : public models::NormalForceModel {
   double k_, c_, m_, r_;
 };
 
+// The same law per DEM contact: it does not depend on R_eff or m_eff.
+class LinearSpringDem final : public models::DemLaw {
+ public:
+  LinearSpringDem(double k, double c) : k_(k), c_(c) {}
+  double force(const models::ContactGeometry&, double xi, double rate) const override {
+    return xi <= 0.0 ? 0.0 : k_ * xi + c_ * rate;
+  }
+  double energy(const models::ContactGeometry&, double xi) const override { return xi <= 0.0 ? 0.0 : 0.5 * k_ * xi * xi; }
+
+ private:
+  double k_, c_;
+};
+
 // Its parameters: a struct and its field table (name, unit, range, default, help, member).
 struct LinearSpringParameters {
   double stiffness = 0.0;  // k [N/m], required
@@ -61,13 +74,13 @@ models::Traits toy_traits() {
 const models::ModelRow& register_toy() {
   static const models::ModelRow& row = models::model_registry().add(models::model_row(
       "test-linear-spring", "linear spring-dashpot (test only)", "Cundall & Strack (1979)", toy_traits(), toy_fields(),
-      models::TypedFactories<LinearSpringParameters>{
-          [](const Pair& pair, const LinearSpringParameters& p, const models::ModelContext&) {
-            models::Model m;
-            m.normal = models::ForceLaw{std::make_shared<LinearSpring>(p.stiffness, p.damping, pair.effective_mass(),
-                                                                       pair.effective_radius())};
-            return m;
-          }}));
+      [](const Pair& pair, const LinearSpringParameters& p, const models::ModelContext&) {
+        models::Made<models::ForceLaw> m;
+        m.normal = models::ForceLaw{
+            std::make_shared<LinearSpring>(p.stiffness, p.damping, pair.effective_mass(), pair.effective_radius()),
+            std::make_shared<LinearSpringDem>(p.stiffness, p.damping)};
+        return m;
+      }));
   return row;
 }
 
@@ -108,6 +121,42 @@ TEST(FrontDoor, ToyModelAddedAsOneRow) {
                InvalidArgument);
   // A keyword is taken once.
   EXPECT_THROW(models::model_registry().add(row), InvalidArgument);
+  // Its engine is the kind its factory makes; its DEM law came from the same factory.
+  EXPECT_EQ(row.traits.engine, models::Engine::force_law);
+  const models::DemModel dem =
+      api::dem_model({{"model", std::string("test-linear-spring")}, {"material", std::string("steel")}, {"stiffness", k}});
+  EXPECT_EQ(dem.normal->force({1e-3, 1e-3}, 2e-6, 0.0), k * 2e-6);  // exact: one product
+}
+
+// The rules between a model's parameters are its table's, checked where the model is made, and
+// refused by the one-line rule naming the input that breaks them.
+TEST(FrontDoor, RulesBetweenParametersNameTheInput) {
+  const auto refusal = [](api::Inputs in) {
+    try {
+      api::collide(steel(std::move(in)));
+    } catch (const InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const auto model = [](const char* name) { return api::Inputs{{"model", std::string(name)}, {"velocity", 0.5}}; };
+  api::Inputs two = model("viscoelastic");
+  two.insert({{"A", 1e-9}, {"tvis", 1e-11}});
+  EXPECT_EQ(refusal(two), "tvis = 1e-11 is invalid: expected one of A, the viscosities eta1 and eta2, or T_vis, not "
+                          "two (model viscoelastic)");
+  api::Inputs half = model("viscoelastic-shifted");
+  half.insert({"eta1", 1.0});
+  EXPECT_EQ(refusal(half), "eta2 = (not given) is invalid: expected eta2 given with eta1 (model viscoelastic-shifted)");
+  EXPECT_EQ(refusal(model("viscoelastic")),
+            "A = (not given) is invalid: expected one of A, the viscosities eta1 and eta2, or T_vis (model viscoelastic)");
+  api::Inputs krijt = model("krijt");
+  krijt.insert({{"gamma", 0.1}, {"A", 1e-9}});
+  EXPECT_EQ(refusal(krijt),
+            "tvis = (not given) is invalid: expected a viscous relaxation time T_vis > 0 s for the crack law K13 (16) "
+            "(model krijt)");
+  api::Inputs both = model("jkr-viscoelastic");  // A and T_vis: A damps the bulk, T_vis is the viscous time
+  both.insert({{"gamma", 0.1}, {"A", 1e-9}, {"tvis", 1e-11}});
+  EXPECT_EQ(refusal(both), "accepted");
 }
 
 // Every model refuses a parameter that only other models take, naming it and the models

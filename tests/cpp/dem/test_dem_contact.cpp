@@ -68,7 +68,7 @@ api::Inputs krijt(double tvis, double z0) {
 // The DEM law of a collide's inputs: the same without the radii (a DEM's atoms have theirs).
 models::DemModel law_of(api::Inputs in) {
   in.erase("radius"), in.erase("radius2");
-  return api::contact_law(in);
+  return api::dem_model(in);
 }
 
 // One of docs/lammps.md's twelve krijt cases: its inputs, `bounce sticking`'s v_s and its DEM law.

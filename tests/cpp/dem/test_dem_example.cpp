@@ -47,7 +47,7 @@ using Contact = dem::Composition<dem::Tangential, LinearSpring>;
 // Two 1 mm spheres of E = 1e9 Pa, closing at 1 m/s and sliding at 0.5 m/s, Hertz's law.
 // (Made at first use, not at static initialisation: the library's own tables may not exist yet.)
 const models::DemModel& hertz() {
-  static const models::DemModel law = api::contact_law({{"model", std::string("hertz")}, {"E", 1e9}, {"nu", 0.3}});
+  static const models::DemModel law = api::dem_model({{"model", std::string("hertz")}, {"E", 1e9}, {"nu", 0.3}});
   return law;
 }
 

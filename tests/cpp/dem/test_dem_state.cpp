@@ -19,7 +19,7 @@ namespace {
 
 // Two 1 um ice grains with krijt and friction, oblique and spinning: every sub-model's state moves.
 models::DemModel krijt_with_friction() {
-  return api::contact_law({{"material", std::string("water-ice")}, {"model", std::string("krijt")}, {"tvis", 1e-12},
+  return api::dem_model({{"material", std::string("water-ice")}, {"model", std::string("krijt")}, {"tvis", 1e-12},
                            {"friction", 0.3}, {"asperity", 1e-9}});
 }
 
@@ -97,7 +97,7 @@ TEST(DemState, OtherBodyViewGivesEqualAndOppositeLoads) {
 // for every law (5 values, as restart files have had them), krijt's crack besides (13).
 TEST(DemState, LayoutHoldsWhatItsLawsUse) {
   dem::Layout plain;
-  plain.add(api::contact_law({{"model", std::string("hertz")}, {"E", 1e9}, {"nu", 0.3}}));
+  plain.add(api::dem_model({{"model", std::string("hertz")}, {"E", 1e9}, {"nu", 0.3}}));
   EXPECT_EQ(plain.size(), 5);
   dem::Layout both = plain;
   both.add(krijt_with_friction());
@@ -122,7 +122,7 @@ TEST(DemState, LayoutHoldsWhatItsLawsUse) {
 TEST(DemStepCheck, StiffnessAndDampingAreTheLaws) {
   const double E = 1e9, nu = 0.3, A = 1e-6, R = 5e-4, m = 1e-6, xi = 1e-6, rate = 0.2, dt = 1e-7;
   const double e_star = E / (2 * (1 - nu * nu));
-  const models::DemModel law = api::contact_law({{"model", std::string("viscoelastic")}, {"E", E}, {"nu", nu}, {"A", A}});
+  const models::DemModel law = api::dem_model({{"model", std::string("viscoelastic")}, {"E", E}, {"nu", nu}, {"A", A}});
   const dem::StepCheck c = dem::check_step(*law.normal, {R, m}, xi, rate, dt, 1.0);
   EXPECT_NEAR(c.stiffness / (2 * e_star * std::sqrt(R * xi)), 1.0, 1e-6);
   EXPECT_NEAR(c.damping / (2 * e_star * A * std::sqrt(R * xi)), 1.0, 1e-9);

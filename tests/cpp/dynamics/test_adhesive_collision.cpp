@@ -38,7 +38,7 @@ models::Model krijt(const Pair& pair, double tvis, double z0 = 0.2e-9, Parameter
   more.insert({{"tvis", tvis}, {"z0", z0}});
   return bounce::testing::model(pair, "krijt", more);
 }
-const models::KrijtParameters& krijt_parameters(const models::Model& m) { return m.contact_parameters()[0]; }
+const models::KrijtParameters& krijt_parameters(const models::Model& m) { return m.crack_parameters()[0]; }
 double fraction(double part, const dynamics::CollisionOutcome& o) { return part / o.energy.initial_kinetic; }
 }  // namespace
 

@@ -80,13 +80,16 @@ TEST(MaugisViscoelastic, StickingVelocityContinuousOverLambda) {
 
 // The DMT end: the least force along the branch (the pull-off under force control) tends to
 // DMT's -2 pi w R as lambda -> 0, its error falling as lambda^1.5 (docs/contact.md: bound
-// 2 lambda^1.5); the DEM law's force at zero rate is sampled over the branch's overlaps.
+// 2 lambda^1.5); the DEM law's force at zero rate is sampled over the branch's overlaps. The law
+// is made, as pair_coeff makes it, for the materials (a 1 m pair: the collision model's own check
+// h0 <= R_eff/10 holds there) and evaluated at the 1 um pair's R_eff, where h0 reaches R_eff/5.
 TEST(MaugisViscoelastic, PullOffTendsToDmt) {
   const Pair pair = ice_pair();
   const double dmt = -2.0 * std::numbers::pi * *pair.surface_energy() * pair.effective_radius();
   for (double z0 : {1e-8, 1e-7, 1e-6}) {
-    const models::DemModel law = models::make_contact_law(
-        pair, "maugis-viscoelastic", models::bind_model_parameters("maugis-viscoelastic", {{"z0", z0}, {"A", 0.0}}));
+    const models::DemModel law =
+        models::make_dem_model(Pair::identical(ice(), 1.0), "maugis-viscoelastic",
+                               models::bind_model_parameters("maugis-viscoelastic", {{"z0", z0}, {"A", 0.0}}));
     const models::ContactGeometry g{pair.effective_radius(), pair.effective_mass()};
     const double from = law.normal->release_overlap(g), to = 2.0 * -from;
     double least = 0.0;

@@ -77,7 +77,7 @@ void expect_jacobian(const StiffSystem& system, double t, std::vector<double> y,
 
 models::KrijtParameters ice_parameters(double tvis) {
   const Pair pair = Pair::identical(MaterialTable::builtin().at("water-ice"), 2.0353e-6);
-  return bounce::testing::model(pair, "krijt", {{"tvis", tvis}}).contact_parameters()[0];
+  return bounce::testing::model(pair, "krijt", {{"tvis", tvis}}).crack_parameters()[0];
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// krijt as a DEM contact law (models::CrackContactLaw, LAMMPS's pair_style bounce): its
+// krijt as a DEM contact law (models::DemCrackLaw, LAMMPS's pair_style bounce): its
 // contact forms as K13 appendix B has it, its radius moves by a crack step stable for any dt and
 // of second order along uniform steps, its energy released closes the contact's energy budget,
 // and no neck holds beyond its release overlap.
@@ -23,12 +23,12 @@ constexpr double pi = std::numbers::pi;
 // Two 1 um water-ice grains (K13 table 2), as LAMMPS gives them to the law.
 struct Ice {
   explicit Ice(double tvis, double z0 = 2e-10)
-      : law(api::contact_law({{"model", std::string("krijt")},
+      : law(api::dem_model({{"model", std::string("krijt")},
                               {"material", std::string("water-ice")},
                               {"tvis", tvis},
                               {"z0", z0}})) {}
   models::DemModel law;
-  const models::CrackContactLaw& crack() const { return *law.crack; }
+  const models::DemCrackLaw& crack() const { return *law.crack; }
   models::ContactGeometry g{0.5e-6, 0.5 * 1000.0 * 4.0 / 3.0 * pi * 1e-18};
   double modulus = 7e9 / (2.0 * (1.0 - 0.25 * 0.25));  // E* of like bodies
   double gamma = 0.37;

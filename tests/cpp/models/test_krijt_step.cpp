@@ -74,22 +74,22 @@ TEST(KrijtStep, LeapfrogCollisionsConvergeToTheEngine) {
     const Case c = krijt_case(tvis, speed);
     const auto reference = analysis::collide(c.pair, c.model, speed);
     ASSERT_EQ(reference.outcome, dynamics::Outcome::bounce);
-    const LeapfrogRun coarse = leapfrog(c.model.contact_parameters()[0], speed, c.t_hertz, c.t_hertz / 100.0);
-    const LeapfrogRun fine = leapfrog(c.model.contact_parameters()[0], speed, c.t_hertz, c.t_hertz / 400.0);
+    const LeapfrogRun coarse = leapfrog(c.model.crack_parameters()[0], speed, c.t_hertz, c.t_hertz / 100.0);
+    const LeapfrogRun fine = leapfrog(c.model.crack_parameters()[0], speed, c.t_hertz, c.t_hertz / 400.0);
     ASSERT_TRUE(coarse.bounced && fine.bounced);
     EXPECT_LE(std::abs(coarse.cor - reference.cor), 1e-2) << coarse.cor << " " << reference.cor;
     EXPECT_LT(std::abs(fine.cor - reference.cor), std::abs(coarse.cor - reference.cor));
   }
   const Case sticky = krijt_case(1e-10, speed);
   EXPECT_EQ(analysis::collide(sticky.pair, sticky.model, speed).outcome, dynamics::Outcome::stick);
-  EXPECT_FALSE(leapfrog(sticky.model.contact_parameters()[0], speed, sticky.t_hertz, sticky.t_hertz / 100.0).bounced);
+  EXPECT_FALSE(leapfrog(sticky.model.crack_parameters()[0], speed, sticky.t_hertz, sticky.t_hertz / 100.0).bounced);
 }
 
 // Stable for any crack speed: with T_vis = 1e-20 s (c dt ~ 1e12 a) one step lands on the JKR
 // equilibrium a(delta) of the fast-crack limit, from far off it on either side.
 TEST(KrijtStep, FastCrackLandsOnTheJkrBranch) {
   const Case c = krijt_case(1e-20, 6.0);
-  const models::KrijtParameters& p = c.model.contact_parameters()[0];
+  const models::KrijtParameters& p = c.model.crack_parameters()[0];
   const contact::jkr::DisplacementBranch branch({p.effective_radius, p.effective_modulus, p.surface_energy});
   for (double delta : {2e-9, 0.0, -2e-10}) {
     const double jkr = branch.radius(delta);
@@ -112,7 +112,7 @@ TEST(KrijtStep, FastCrackLandsOnTheJkrBranch) {
 // also covers the scan's bisection (1e-12 a).
 TEST(KrijtStep, NewtonFindsTheConnectedRootOfARunningAwayNeck) {
   const Case c = krijt_case(1e-12, 6.0);
-  const models::KrijtParameters& p = c.model.contact_parameters()[0];
+  const models::KrijtParameters& p = c.model.crack_parameters()[0];
   const double top = (1.0 - models::krijt_break_margin) / p.k, bottom = p.k * (1.0 + 1e-12);
   int roots = 0, breaks = 0;
   for (double delta : {-1e-9, -2e-9, -3e-9, -3.7e-9, -4.34866e-9}) {
@@ -220,8 +220,8 @@ void check_shrinking_step(const models::KrijtParameters& p, double delta, double
 TEST(KrijtStep, TheShrinkingSearchFindsTheConnectedRootOrTheBreak) {
   auto state = [](double k, double tvis, double fraction) {
     const Case c = krijt_case(tvis, 6.0, k);
-    const double delta = fraction * models::krijt_release_overlap(c.model.contact_parameters()[0]);
-    return std::tuple{c, delta, std::sqrt(-delta * c.model.contact_parameters()[0].effective_radius / 3.0)};
+    const double delta = fraction * models::krijt_release_overlap(c.model.crack_parameters()[0]);
+    return std::tuple{c, delta, std::sqrt(-delta * c.model.crack_parameters()[0].effective_radius / 3.0)};
   };
   Tally tally;
   for (const auto& [k, tvis] : {std::pair{0.02, 1e-13}, {0.02, 1e-12}, {0.1, 1e-12}, {0.5, 1e-12}}) {
@@ -231,7 +231,7 @@ TEST(KrijtStep, TheShrinkingSearchFindsTheConnectedRootOrTheBreak) {
         for (double ratio = 0.5; ratio <= 4.0; ratio *= 1.05) {
           SCOPED_TRACE(testing::Message() << "k " << k << " T_vis " << tvis << " delta " << delta << " dt " << dt
                                           << " a_old/meeting " << ratio);
-          check_shrinking_step(c.model.contact_parameters()[0], delta, dt, ratio * meeting, tally);
+          check_shrinking_step(c.model.crack_parameters()[0], delta, dt, ratio * meeting, tally);
         }
       }
     }
@@ -246,7 +246,7 @@ TEST(KrijtStep, TheShrinkingSearchFindsTheConnectedRootOrTheBreak) {
     SCOPED_TRACE(testing::Message() << "k " << k << " T_vis " << tvis << " fraction " << fraction << " n " << n);
     const auto [c, delta, meeting] = state(k, tvis, fraction);
     const Tally before = tally;
-    check_shrinking_step(c.model.contact_parameters()[0], delta, dt, 0.5 * std::pow(1.013, n) * meeting, tally);
+    check_shrinking_step(c.model.crack_parameters()[0], delta, dt, 0.5 * std::pow(1.013, n) * meeting, tally);
     EXPECT_EQ(tally.roots, before.roots + 1);  // each holds a root: the neck shrinks and holds
   }
   std::printf("%d roots, %d breaks\n", tally.roots, tally.breaks);

@@ -1,12 +1,13 @@
 #pragma once
-// A model's normal interaction as a DEM contact law: the same physics as the model's force
-// (normal_force.hpp, and K13's JKR branch for jkr-viscoelastic) with the two bodies' radii and
-// masses given per contact, as a DEM code (LAMMPS's pair_style bounce, docs/lammps.md) has
-// grains of many sizes, instead of fixed by a Pair. A registry row's `contact_law` factory
-// makes it once per pair of materials; a DEM step evaluates it per contact.
+// A model's normal law as a DEM law: the same physics as the law its collision engine
+// integrates (normal_force.hpp, K13's JKR branch for jkr-viscoelastic, the crack law for krijt)
+// with the two bodies' radii and masses given per contact, as a DEM code (LAMMPS's pair_style
+// bounce, docs/lammps.md) has grains of many sizes, instead of fixed by a Pair. The model's
+// factory makes it beside that law (model.hpp), once per pair of materials; a DEM step
+// (bounce::dem) evaluates it per contact.
 //
 // Each law's formula is written once, as a function of the force constant and the geometry,
-// and both the model's NormalForceModel and its ContactLaw call it.
+// and both forms call it.
 
 #include <memory>
 #include <optional>
@@ -23,9 +24,9 @@ struct ContactGeometry {
   double effective_mass = 0.0;    ///< m_eff = m1 m2 / (m1 + m2) (m1 against a wall) [kg]
 };
 
-class ContactLaw {
+class DemLaw {
  public:
-  virtual ~ContactLaw() = default;
+  virtual ~DemLaw() = default;
   /// Total normal force [N] (positive = repulsive) at overlap xi and rate xi' of a contact
   /// that exists (for adhesive laws, down to release_overlap()).
   virtual double force(const ContactGeometry& g, double overlap, double rate) const = 0;
@@ -46,7 +47,7 @@ class ContactLaw {
   }
 };
 
-/// What a contact whose radius is a variable of its own (CrackContactLaw) carries from step to
+/// What a contact whose radius is a variable of its own (DemCrackLaw) carries from step to
 /// step.
 struct CrackState {
   double contact_radius = 0.0;   ///< a [m]
@@ -61,7 +62,7 @@ struct CrackAdvance {
   bool broken = false;      ///< the contact ended inside the step
 };
 
-/// How CrackContactLaw::advance may divide a step in which the crack moves fast.
+/// How DemCrackLaw::advance may divide a step in which the crack moves fast.
 enum class Refinement {
   none,           ///< not at all: the caller divides the step already
   full,           ///< where its error estimate asks for it, and where one step breaks the contact
@@ -71,9 +72,9 @@ enum class Refinement {
 
 /// A contact law whose contact radius a is independent of the overlap and moves by a crack law
 /// (K13's): its force depends on (a, xi, xi'), and a DEM keeps a per contact between steps.
-class CrackContactLaw {
+class DemCrackLaw {
  public:
-  virtual ~CrackContactLaw() = default;
+  virtual ~DemCrackLaw() = default;
   /// The state where the contact forms, at overlap 0; `dissipated` the energy the formation
   /// released (K13 appendix B).
   virtual CrackState form(const ContactGeometry& g, double& dissipated) const = 0;
@@ -101,12 +102,12 @@ class CrackContactLaw {
   virtual double release_overlap(const ContactGeometry& g) const = 0;
 };
 
-/// A model as a DEM contact law for one pair of materials (models::make_contact_law): its
+/// A model as a DEM contact law for one pair of materials (models::make_dem_model): its
 /// normal law is `normal`, or `crack` for a law with a contact radius of its own (krijt).
 struct DemModel {
   std::string name;                            ///< the registry keyword
-  std::shared_ptr<const ContactLaw> normal;
-  std::shared_ptr<const CrackContactLaw> crack;
+  std::shared_ptr<const DemLaw> normal;
+  std::shared_ptr<const DemCrackLaw> crack;
   /// The overlap (<= 0) below which no contact of this law holds (its normal or crack law's).
   double release_overlap(const ContactGeometry& g) const {
     return crack ? crack->release_overlap(g) : normal->release_overlap(g);

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "bounce/models/adhesive_geometry.hpp"
-#include "bounce/models/contact_law.hpp"
+#include "bounce/models/dem_law.hpp"
 
 namespace bounce::models::detail {
 
@@ -14,7 +14,7 @@ namespace bounce::models::detail {
 /// branch's energy; the contact forms at the branch's snap overlap and holds down to its release.
 /// `At` makes (or finds) the geometry at a contact's R_eff: at(R) is an AdhesiveGeometry.
 template <class At>
-class AdhesiveBranchContact final : public ContactLaw {
+class AdhesiveBranchContact final : public DemLaw {
  public:
   AdhesiveBranchContact(At at, double effective_modulus, double dissipative_constant, AdhesiveRelease release)
       : at_(std::move(at)), damping_(2.0 * dissipative_constant * effective_modulus), release_(release) {}
@@ -34,7 +34,7 @@ class AdhesiveBranchContact final : public ContactLaw {
 };
 
 template <class At>
-std::shared_ptr<const ContactLaw> adhesive_branch_contact(At at, double effective_modulus, double dissipative_constant,
+std::shared_ptr<const DemLaw> adhesive_branch_contact(At at, double effective_modulus, double dissipative_constant,
                                                           AdhesiveRelease release) {
   return std::make_shared<AdhesiveBranchContact<At>>(std::move(at), effective_modulus, dissipative_constant, release);
 }

@@ -1,4 +1,4 @@
-// The models as DEM contact laws (models/contact_law.hpp, LAMMPS's pair_style bounce): the same
+// The models as DEM contact laws (models/dem_law.hpp, LAMMPS's pair_style bounce): the same
 // physics as each model's force for the same pair, the JKR neck's end, BSHP96's tangential laws
 // over a step, and pair_coeff's inputs checked by the CLI's rules.
 #include <cmath>
@@ -22,12 +22,12 @@ Pair pair_of(const char* material, double r1, double r2) {
 }
 
 models::DemModel law(const Pair& pair, const char* model, const ParameterInputs& inputs) {
-  return models::make_contact_law(pair, model, models::bind_model_parameters(model, inputs));
+  return models::make_dem_model(pair, model, models::bind_model_parameters(model, inputs));
 }
 
 std::string refusal(const api::Inputs& inputs) {
   try {
-    (void)api::contact_law(inputs);
+    (void)api::dem_model(inputs);
   } catch (const InvalidArgument& e) {
     return e.what();
   }
@@ -38,7 +38,7 @@ std::string refusal(const api::Inputs& inputs) {
 
 // For the pair it was made for, each contact law gives the model's own force and potential:
 // one formula, two callers. Bit for bit, since both evaluate the same expression.
-TEST(ContactLaw, EqualsTheModelsForceForItsPair) {
+TEST(DemLaw, EqualsTheModelsForceForItsPair) {
   struct Case {
     const char* model;
     const char* material;
@@ -68,7 +68,7 @@ TEST(ContactLaw, EqualsTheModelsForceForItsPair) {
 }
 
 // jkr-viscoelastic: K13 (2) + (19) on the JKR branch, held down to the fold or the pull-off point.
-TEST(ContactLaw, JkrViscoelasticFollowsTheJkrBranchAndEndsAtTheRule) {
+TEST(DemLaw, JkrViscoelasticFollowsTheJkrBranchAndEndsAtTheRule) {
   const Pair pair = pair_of("water-ice", 1e-6, 2e-6);
   const models::ContactGeometry g{pair.effective_radius(), pair.effective_mass()};
   const contact::jkr::Parameters j{pair.effective_radius(), pair.effective_modulus(), pair.surface_energy().value()};
@@ -95,7 +95,7 @@ TEST(ContactLaw, JkrViscoelasticFollowsTheJkrBranchAndEndsAtTheRule) {
 
 // contact::jkr::DisplacementBranch (the engine's and the DEM's fast inverse of K13 (8)) agrees
 // with the bracketing solver to round-off, on both sides of delta = 0 and at the fold.
-TEST(ContactLaw, FastJkrBranchAgreesWithTheBracketingSolver) {
+TEST(DemLaw, FastJkrBranchAgreesWithTheBracketingSolver) {
   const contact::jkr::Parameters j{5e-7, 3.9e9, 0.74};
   const contact::jkr::DisplacementBranch branch(j);
   const double delta_c = contact::jkr::separation_overlap(j);
@@ -109,7 +109,7 @@ TEST(ContactLaw, FastJkrBranchAgreesWithTheBracketingSolver) {
 
 // BSHP96 (35)-(36) over DEM steps: the force never exceeds mu F^N; the spring's extension
 // restarts at each break; the passive form keeps the stored energy when k changes.
-TEST(ContactLaw, AsperityLawOverSteps) {
+TEST(DemLaw, AsperityLawOverSteps) {
   models::TangentialModel t;
   t.friction = 0.3;
   t.asperity_size = 1e-6;
@@ -145,7 +145,7 @@ TEST(ContactLaw, AsperityLawOverSteps) {
 }
 
 // BSHP96 (39): the step law, Coulomb-limited viscous sliding.
-TEST(ContactLaw, StepLaw) {
+TEST(DemLaw, StepLaw) {
   models::TangentialModel t;
   t.law = models::TangentialLaw::step;
   t.friction = 0.5;
@@ -162,8 +162,8 @@ TEST(ContactLaw, StepLaw) {
 
 // pair_coeff's inputs: the CLI's names and rules; what LAMMPS supplies or never uses is refused
 // with the reason.
-TEST(ContactLaw, PairCoeffInputsAreCheckedByTheClisRules) {
-  const models::DemModel ok = api::contact_law({{"model", std::string("viscoelastic")},
+TEST(DemLaw, PairCoeffInputsAreCheckedByTheClisRules) {
+  const models::DemModel ok = api::dem_model({{"model", std::string("viscoelastic")},
                                                 {"material", std::string("ice-bshp96")},
                                                 {"A", std::string("1e-5")},
                                                 {"friction", std::string("0.3")},
@@ -196,7 +196,7 @@ TEST(ContactLaw, PairCoeffInputsAreCheckedByTheClisRules) {
   // krijt: a crack law with its own contact radius, between atoms only.
   const api::Inputs krijt{{"model", std::string("krijt")}, {"material", std::string("water-ice")},
                           {"tvis", std::string("1e-11")}};
-  const models::DemModel k13 = api::contact_law(krijt);
+  const models::DemModel k13 = api::dem_model(krijt);
   EXPECT_TRUE(k13.crack && !k13.normal);
   EXPECT_NE(refusal({{"model", std::string("krijt")}, {"material", std::string("water-ice")}}).find("tvis"),
             std::string::npos);
@@ -209,7 +209,7 @@ TEST(ContactLaw, PairCoeffInputsAreCheckedByTheClisRules) {
                 .find("z0 = -2e-10 is invalid"),
             std::string::npos);
   try {
-    api::wall_contact_law(krijt);
+    api::wall_dem_model(krijt);
     ADD_FAILURE() << "krijt against a wall was accepted";
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find("krijt acts between atoms only"), std::string::npos) << e.what();
