@@ -57,14 +57,18 @@ std::string collide_text(const Record& out) {
   const bool stuck = str(out, "outcome") == "stick";
   s += fmt::format("cor          e   = {:.12g}\noutcome          = {}\n", num(out, "cor"), str(out, "outcome"));
   if (out.contains("tangential")) s += tangential_line(out.at("tangential").record());
-  s += fmt::format("contact time t_c = {:.6g} s{}\nmax overlap      = {:.6g} m\n", num(out, "contact_time"),
-                   stuck ? " (sticking: when it became certain, or the end of --follow)" : "", num(out, "max_overlap"));
+  s += stuck ? fmt::format("contact time t_c = none: the grains stick (integrated for {:.6g} s)\n",
+                           num(out, "integrated_time"))
+              : fmt::format("contact time t_c = {:.6g} s\n", num(out, "contact_time"));
+  s += out.at("max_overlap").is_null() ? std::string("max overlap      = not reached before sticking was certain\n")
+                                       : fmt::format("max overlap      = {:.6g} m\n", num(out, "max_overlap"));
   if (out.contains("merged")) s += merged_line(out.at("merged").record());
   const Record& e = out.at("energy").record();
   s += fmt::format(
-      "energy [J]: initial {:.6g}, final {:.6g}, bulk dissipated {:.6g}, crack dissipated {:.6g}, plastic {:.6g}, "
+      "energy [J]: initial {:.6g}, {} {:.6g}, bulk dissipated {:.6g}, crack dissipated {:.6g}, plastic {:.6g}, "
       "left elastic {:.6g}, left surface {:.6g}\n",
-      num(e, "initial_kinetic"), num(e, "final_kinetic"), num(e, "bulk_dissipated"), num(e, "crack_dissipated"),
+      num(e, "initial_kinetic"), stuck ? "kinetic at stop" : "final",
+      num(e, stuck ? "kinetic_at_stop" : "final_kinetic"), num(e, "bulk_dissipated"), num(e, "crack_dissipated"),
       num(e, "plastic_dissipated"), num(e, "elastic_remaining"), num(e, "surface_remaining"));
   if (out.contains("closed_forms")) {
     const Record& closed = out.at("closed_forms").record();

@@ -237,8 +237,8 @@ Table collide_columns(const Inputs& inputs, const std::vector<double>& velocitie
       if (same == warnings->end()) warnings->push_back(text);
       else *same = text;
     }
-    std::vector<Value> row = {v, o.cor, dynamics::to_string(o.outcome), o.contact_time, o.max_overlap,
-                              o.energy.bulk_dissipated, o.energy.crack_dissipated};
+    std::vector<Value> row = {v, o.cor, dynamics::to_string(o.outcome), detail::contact_time_value(o),
+                              detail::max_overlap_value(o), o.energy.bulk_dissipated, o.energy.crack_dissipated};
     if (oblique) row.push_back(o.tangential ? Value(o.tangential->cor) : Value());
     t.rows.push_back(std::move(row));
   }

@@ -56,22 +56,56 @@ Record pair_record(const Pair& pair) {
   return r;
 }
 
+Value detail::contact_time_value(const dynamics::CollisionOutcome& o) {
+  return o.outcome == dynamics::Outcome::stick ? Value() : Value(o.contact_time);
+}
+
+Value detail::max_overlap_value(const dynamics::CollisionOutcome& o) {
+  return o.compression_unfinished ? Value() : Value(o.max_overlap);
+}
+
+namespace {
+
+// What the record of sticking grains says about its times and energies (docs/adhesive.md).
+constexpr const char* sticking_note =
+    "the grains stick, so they have no contact time (contact_time is null): integrated_time is how long the "
+    "collision was integrated, and energy.kinetic_at_stop the relative kinetic energy at its end, which the "
+    "attraction can raise above initial_kinetic (surface_remaining < 0 holds what it gave)";
+
+// The energy budget by name; for sticking grains the kinetic energy is where the integration
+// stopped, not after the collision.
+Record energy_record(const dynamics::CollisionOutcome& o) {
+  auto values = named_values(o.energy);
+  if (o.outcome == dynamics::Outcome::stick) {
+    for (auto& [name, value] : values) {
+      if (name == "final_kinetic") name = "kinetic_at_stop";
+    }
+  }
+  return to_record(values);
+}
+
+}  // namespace
+
 Record outcome_record(const dynamics::CollisionOutcome& o) {
+  const bool stuck = o.outcome == dynamics::Outcome::stick;
   Record r;
   r.set("cor", o.cor);
   r.set("outcome", dynamics::to_string(o.outcome));
-  r.set("contact_time", o.contact_time);
-  r.set("max_overlap", o.max_overlap);
-  r.set("time_of_max_overlap", o.time_of_max_overlap);
+  r.set("contact_time", detail::contact_time_value(o));
+  if (stuck) r.set("integrated_time", o.contact_time);
+  r.set("max_overlap", detail::max_overlap_value(o));
+  r.set("time_of_max_overlap", o.compression_unfinished ? Value() : Value(o.time_of_max_overlap));
   r.set("method", o.method);
   r.set("steps", o.steps);
-  r.set("energy", to_record(named_values(o.energy)));
+  r.set("energy", energy_record(o));
   if (o.tangential) {
     r.set("cor_tangential", o.tangential->cor);
     r.set("tangential", tangential_record(*o.tangential));
   }
   r.set("warnings", o.warnings);
-  r.set("notes", o.notes);
+  std::vector<std::string> notes = o.notes;
+  if (stuck) notes.insert(notes.begin(), sticking_note);
+  r.set("notes", notes);
   if (!o.trajectory.empty()) r.set("trajectory", trajectory_table(o.trajectory));
   return r;
 }

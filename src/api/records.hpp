@@ -13,5 +13,10 @@ void add_scales(Record& out, const Pair& pair, const models::Model& model, doubl
 Record closed_forms_record(const Pair& pair, const models::Model& model, double velocity);
 /// Sticking grains as one body (analysis::merged_body).
 Record merged_record(const Pair& pair, double velocity);
+/// The contact time of a bounce; null for sticking grains, which stay in contact (the time
+/// integrated is `integrated_time`).
+Value contact_time_value(const dynamics::CollisionOutcome& o);
+/// The maximum overlap; null where sticking was certain before it.
+Value max_overlap_value(const dynamics::CollisionOutcome& o);
 
 }  // namespace bounce::api::detail

@@ -243,6 +243,7 @@ void AdhesiveContactCollision::finish(const detail::IntegrationResult<3>& result
   } else if (result.hits.empty()) {  // stopped before the maximum compression
     out_.max_overlap = std::max(end[0], 0.0) * s_.length;
     out_.time_of_max_overlap = result.terminal.time * s_.time;
+    out_.compression_unfinished = true;
     out_.notes.push_back(detail::before_max_compression_note);
   }
   const bool bounced = result.terminal.id == release;

@@ -13,17 +13,17 @@
 namespace bounce::dynamics::detail {
 
 inline constexpr const char* before_max_compression_note =
-    "sticking was certain before the maximum compression: max_overlap is the overlap at that time (--follow "
-    "integrates the settling)";
+    "sticking was certain before the maximum compression, which max_overlap (null) therefore does not give "
+    "(--follow integrates the settling)";
 
 /// What a followed sticking collision says about its end (`--follow T`): it ran to T, or,
 /// when the outcome was still open at T, on until sticking became certain.
 inline std::string followed_note(double follow_time, double end) {
   if (end <= follow_time * (1.0 + 1e-9)) {
-    return fmt::format("followed until {:.6g} s without breaking off: contact_time is that end", end);
+    return fmt::format("followed until {:.6g} s without breaking off: integrated_time is that end", end);
   }
   return fmt::format("the outcome was still open at the followed time {:.6g} s: integrated on until sticking "
-                     "became certain at {:.6g} s (contact_time)", follow_time, end);
+                     "became certain at {:.6g} s (integrated_time)", follow_time, end);
 }
 
 /// The end of an adhesive collision at scaled rate v = delta'/g with the contact's elastic and
@@ -34,7 +34,7 @@ inline void finish_adhesive(CollisionOutcome& out, const Scales& s, double v, do
                             bool bounced) {
   EnergyBudget& e = out.energy;
   e.initial_kinetic = s.energy;
-  e.final_kinetic = s.energy * v * v;  // for sticking: the kinetic energy at the end
+  e.final_kinetic = s.energy * v * v;  // for sticking: the kinetic energy where the integration stopped
   if (bounced) {
     out.outcome = Outcome::bounce;
     out.cor = -v;

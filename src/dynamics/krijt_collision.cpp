@@ -256,6 +256,7 @@ Episode KrijtEpisode::finish() {
   if (!compressed_ && out_.outcome == Outcome::stick) {  // stopped while still compressing
     out_.max_overlap = std::max(y_[0], 0.0) * s_.length;
     out_.time_of_max_overlap = t_ * s_.time;
+    out_.compression_unfinished = true;
     out_.notes.push_back(detail::before_max_compression_note);
   }
   // A followed collision that never broke off is a sticking one, also when it reached its
@@ -295,6 +296,7 @@ void append_episode(CollisionOutcome& out, const CollisionOutcome& n, double shi
   out.outcome = n.outcome;
   out.cor = n.cor * rate / speed;  // rebound speed relative to the first impact speed
   out.contact_time = shift + n.contact_time;
+  if (n.compression_unfinished && n.max_overlap > out.max_overlap) out.compression_unfinished = true;
   out.max_overlap = std::max(out.max_overlap, n.max_overlap);
   out.steps += n.steps;
   out.energy.bulk_dissipated += n.energy.bulk_dissipated;

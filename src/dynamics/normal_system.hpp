@@ -110,14 +110,16 @@ inline void finish_normal_outcome(CollisionOutcome& out, const NormalEnd& end, c
   } else if (end.stuck) {  // sticking certain while still compressing
     out.max_overlap = end.x * xi0;
     out.time_of_max_overlap = out.contact_time;
-    out.notes.push_back(
-        "sticking was certain before the maximum compression: max_overlap is the overlap at that time");
+    out.compression_unfinished = true;
+    out.notes.push_back("sticking was certain before the maximum compression, which max_overlap (null) therefore "
+                        "does not give");
   }
   EnergyBudget& e = out.energy;
   e.initial_kinetic = 0.5 * energy_unit;
   e.final_kinetic = 0.5 * energy_unit * end.v * end.v;
   e.bulk_dissipated = end.dissipated * energy_unit;
-  e.elastic_remaining = model.elastic_energy(xi0 * end.x);
+  e.surface_remaining = model.adhesive_energy(xi0 * end.x);
+  e.elastic_remaining = model.elastic_energy(xi0 * end.x) - e.surface_remaining;
   e.close();
 }
 

@@ -52,6 +52,9 @@ class AdhesiveViscoelasticForce final : public NormalForceModel {
     return p_.rho * xi * std::sqrt(xi) - p_.adhesion * std::pow(xi, 0.75);
   }
   double elastic_energy(double xi) const override { return adhesive_viscoelastic_energy(p_, xi); }
+  double adhesive_energy(double xi) const override {  // the integral of -C xi^{3/4}, (8.56)
+    return xi <= 0.0 ? 0.0 : -4.0 / 7.0 * p_.adhesion * std::pow(xi, 1.75);
+  }
   double contact_radius(double xi) const override { return contact::hertz::contact_radius(p_.effective_radius, xi); }
   double reference_overlap(double speed) const override {
     return power_law_reference_overlap(p_.rho / p_.effective_mass, 1.5, speed);

@@ -19,12 +19,13 @@ std::string_view to_string(Outcome outcome);
 /// surface_remaining up to the integration error (closure_error).
 struct EnergyBudget {
   double initial_kinetic = 0.0;     ///< (1/2) m_eff g^2
-  double final_kinetic = 0.0;       ///< (1/2) m_eff (e g)^2 after separation
+  double final_kinetic = 0.0;       ///< (1/2) m_eff (e g)^2 after separation; sticking: the relative
+                                    ///< kinetic energy where the integration stopped (kinetic_at_stop)
   double bulk_dissipated = 0.0;     ///< work of the bulk viscous force, K13 (C.3)
   double crack_dissipated = 0.0;    ///< work at the crack tip, K13 (C.2)
   double plastic_dissipated = 0.0;  ///< plastic loss (added when --yield is given)
   double elastic_remaining = 0.0;   ///< elastic energy still stored when the contact ends
-  double surface_remaining = 0.0;   ///< surface energy -pi a^2 gamma when the contact ends
+  double surface_remaining = 0.0;   ///< surface energy -pi a^2 gamma (a force law's adhesive part) then
   /// initial minus the sum of the others; where final_kinetic comes from the energy balance
   /// (a contact held on its adhesive branch), the integrated trajectory's kinetic energy at
   /// the release takes its place here
@@ -113,9 +114,13 @@ std::vector<std::pair<std::string, double>> named_values(const TangentialOutcome
 struct CollisionOutcome {
   double cor = 0.0;                  ///< coefficient of normal restitution (0 when sticking)
   Outcome outcome = Outcome::bounce;
-  double contact_time = 0.0;         ///< [s]; for sticking: time at which sticking was certain
+  double contact_time = 0.0;         ///< [s]; for sticking: the time integrated (when sticking was
+                                     ///< certain, or the end of --follow), not a contact time
   double max_overlap = 0.0;          ///< [m]
   double time_of_max_overlap = 0.0;  ///< [s]
+  /// Sticking was certain before the maximum compression: max_overlap is the overlap then, not
+  /// a maximum (the records give null).
+  bool compression_unfinished = false;
   EnergyBudget energy;
   std::vector<TrajectorySample> trajectory;  ///< empty unless requested; at most max_trajectory_rows
   /// The least time between rows of a trajectory that reached max_trajectory_rows and was

@@ -24,6 +24,12 @@ class NormalForceModel {
   virtual double elastic_force(double overlap) const = 0;
   /// Its potential U(xi) [J], U(0) = 0.
   virtual double elastic_energy(double overlap) const = 0;
+  /// The adhesive part of that potential [J] (<= 0; 0 for laws without adhesion): an energy
+  /// budget reports it as surface_remaining and the rest as elastic_remaining.
+  virtual double adhesive_energy(double overlap) const {
+    (void)overlap;
+    return 0.0;
+  }
   /// A continuous function with the sign of the total force while in contact,
   /// smooth where the force vanishes (used to locate F = 0 for the `force` end
   /// rule). It must not jump at overlap = 0: event location assumes continuity.
