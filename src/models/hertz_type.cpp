@@ -129,6 +129,7 @@ Model contact_model(const KrijtParameters& k, const ContactModelParameters& p, N
   Model m;
   m.normal = std::move(normal);
   m.dissipative_constant = k.dissipative_constant;
+  m.dissipative_constant_from_tvis = !p.dissipative_constant.has_value();  // contact_parameters: then T_vis / nu^2
   m.viscous_time = p.relaxation_time ? k.relaxation_time : k.dissipative_constant;
   m.z0 = k.z0;
   return m;

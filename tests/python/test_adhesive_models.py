@@ -1,7 +1,8 @@
 """Issue 40 points 22 and 20 (docs/adhesive-models.md, docs/hardening.md "round 3").
 
 Point 22: the page's tables of sticking velocities are what `bounce sticking` computes, to their
-printed digits (four significant); point 20: the same for its table of v_s against T_vis and z0.
+printed digits (four significant). Point 20: a krijt outcome that rests on T_vis says so, in the
+CLI's text and JSON and as a Python ValidityWarning, and what the warning claims holds.
 
     PYTHONPATH=build/python /usr/bin/python3 tests/python/test_adhesive_models.py
 prints the tables as the page should hold them (after a change that moves them).
@@ -9,11 +10,15 @@ prints the tables as the page should hold them (after a change that moves them).
 import json
 import os
 import subprocess
+import warnings
+
+import bounce
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 CLI = os.environ.get("BOUNCE_CLI", os.path.join(ROOT, "build", "bin", "bounce"))
 PAGE = os.path.join(ROOT, "docs", "adhesive-models.md")
 MARKER = "<!-- table {} (tests/python/test_adhesive_models.py) -->"
+RESTS = "the outcome rests on T_vis"
 
 ICE_1UM = ["--material", "water-ice", "--radius", "1e-6"]
 # Table "models": 1 um water ice, each model at three T_vis (z0 0.2 nm, k 0.02: the defaults).
@@ -132,6 +137,56 @@ def test_the_pages_quoted_sticking_velocities_are_what_bounce_computes():
     ]
     for phrase in phrases:
         assert phrase in page, phrase
+
+
+def collide_json(*args):
+    done = subprocess.run([CLI, "collide", *args, "--json"], capture_output=True, text=True, check=True)
+    return json.loads(done.stdout)
+
+
+def rests_on_tvis(warning_list):
+    return [w for w in warning_list if w.startswith(RESTS)]
+
+
+SMALL_ICE = ["--material", "water-ice", "--radius", "1e-7", "--model", "krijt", "--velocity", "20"]
+
+
+def test_a_stick_that_rests_on_tvis_is_warned_in_text_json_and_python():
+    """0.1 um ice at 20 m/s sticks at T_vis = 1e-11 s and bounces at 1e-13 s; main said nothing of it."""
+    said = rests_on_tvis(collide_json(*SMALL_ICE, "--tvis", "1e-11")["warnings"])
+    assert len(said) == 1 and "the grains stick only because" in said[0] and "v_c = 9.94 m/s" in said[0], said
+    text = subprocess.run([CLI, "collide", *SMALL_ICE, "--tvis", "1e-11"], capture_output=True, text=True, check=True)
+    assert f"warning: {said[0]}" in text.stdout + text.stderr
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        bounce.collide(bounce.Pair(material="water-ice", radius=1e-7), bounce.Model("krijt", tvis=1e-11), 20.0)
+    assert said[0] in [str(w.message) for w in caught if issubclass(w.category, bounce.ValidityWarning)]
+    assert collide_json(*SMALL_ICE, "--tvis", "1e-13")["outcome"] == "bounce"  # "at a smaller T_vis they bounce"
+
+
+def test_a_bounce_that_rests_on_tvis_is_warned_and_half_the_tvis_raises_e_as_said():
+    """1 um ice at 8 m/s, T_vis = 1e-11 s: e = 0.55, the T_vis losses took 0.67 of the impact energy."""
+    base = ICE_1UM + ["--model", "krijt", "--velocity", "8"]
+    r = collide_json(*base, "--tvis", "1e-11")
+    said = rests_on_tvis(r["warnings"])
+    assert r["outcome"] == "bounce" and len(said) == 1 and "bulk damping (A = T_vis/nu^2)" in said[0], said
+    half = collide_json(*base, "--tvis", "5e-12")
+    assert half["cor"] > r["cor"] + 0.1  # "at half this T_vis e is higher by more than 0.1"
+
+
+def test_outcomes_that_do_not_rest_on_tvis_are_not_warned():
+    """A small viscous share (T_vis = 1e-12 s at 8 m/s: e = 0.91) and a stick below elastic JKR's v_c."""
+    assert not rests_on_tvis(collide_json(*ICE_1UM, "--model", "krijt", "--tvis", "1e-12", "--velocity", "8")[
+        "warnings"])
+    slow = collide_json(*ICE_1UM, "--model", "krijt", "--tvis", "1e-11", "--velocity", "1")
+    assert slow["outcome"] == "stick" and not rests_on_tvis(slow["warnings"])
+
+
+def test_a_given_a_leaves_only_the_crack_to_tvis():
+    """With --A the bulk damping does not scale with T_vis: the warning names the crack alone."""
+    r = collide_json(*ICE_1UM, "--model", "krijt", "--tvis", "1e-11", "--A", "1e-12", "--velocity", "3")
+    said = rests_on_tvis(r["warnings"])
+    assert len(said) == 1 and "the crack's hysteresis took" in said[0] and "bulk" not in said[0], said
 
 
 if __name__ == "__main__":
