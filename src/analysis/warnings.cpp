@@ -18,6 +18,10 @@ namespace {
 
 using dynamics::CollisionOutcome;
 
+// The share of the impact energy taken by losses that scale with T_vis above which an outcome
+// rests on T_vis (add_tvis_dependence_warning; docs/adhesive-models.md).
+constexpr double tvis_dependence_share = 0.5;
+
 // The duration the quasi-static conditions compare with: the contact time of a bounce. A
 // sticking collision has none (the grains stay together); its contact_time is when the
 // engine found sticking certain, at low speed long before the maximum compression, so it
@@ -107,6 +111,32 @@ void add_k13_appendix_a_warnings(CollisionOutcome& out, const Pair& pair, const 
   }
 }
 
+// K13's viscous losses scale with T_vis: the crack's hysteresis through c = E* z0^2/(gamma T_vis)
+// (K13 (16)) and, where A = T_vis/nu^2 (K13 after (18)), the bulk force (19). Of the impact energy
+// E0 the rebound keeps e^2 E0, elastic JKR's snap-on and release take W (K13 (24)-(25), exact), plastic
+// flow its own; the rest went to the T_vis losses (for a stick, e = 0: what they had to take).
+// Over half, halving T_vis returns at least a quarter of E0 to the rebound (e up by >= 0.16) and
+// doubling it takes all, to first order in T_vis: the outcome rests on T_vis (docs/adhesive-models.md).
+void add_tvis_dependence_warning(CollisionOutcome& out, const models::Model& model, const models::KrijtParameters& p,
+                                 double velocity) {
+  const double e0 = 0.5 * p.effective_mass * velocity * velocity;
+  const double jkr = analytic::jkr_collision_loss(p.effective_radius, p.effective_modulus, p.surface_energy);
+  const double bulk_given = model.dissipative_constant_from_tvis ? 0.0 : out.energy.bulk_dissipated;
+  const double share = 1.0 - out.cor * out.cor - (jkr + out.energy.plastic_dissipated + bulk_given) / e0;
+  if (!(share > tvis_dependence_share)) return;
+  const double v_c = std::sqrt(2.0 * jkr / p.effective_mass);
+  const char* losses = model.dissipative_constant_from_tvis ? "the crack's hysteresis and the bulk damping (A = T_vis/nu^2)"
+                                                            : "the crack's hysteresis";
+  out.warnings.push_back(
+      out.outcome == dynamics::Outcome::stick
+          ? fmt::format("the outcome rests on T_vis: the grains stick only because {} took at least {:.2g} of the "
+                        "impact energy (elastic JKR bounces above v_c = {:.3g} m/s); at a smaller T_vis they bounce "
+                        "(docs/adhesive-models.md)", losses, share, v_c)
+          : fmt::format("the outcome rests on T_vis: {} took {:.2g} of the impact energy, beyond elastic JKR's "
+                        "snap-on and release; at half this T_vis e is higher by more than 0.1 "
+                        "(docs/adhesive-models.md)", losses, share));
+}
+
 // K13 §2.1.2: the JKR-based adhesive models assume the Tabor parameter mu > 5.
 void add_tabor_warning(CollisionOutcome& out, const Pair& pair, const models::Model& model) {
   const double gamma = *pair.surface_energy();
@@ -175,6 +205,7 @@ void add_warnings(CollisionOutcome& out, const Pair& pair, const models::Model& 
   if (adhesion == models::Adhesion::jkr || adhesion == models::Adhesion::weak) add_tabor_warning(out, pair, model);
   const auto* crack = std::get_if<models::CrackContact>(&model.normal);
   if (crack && t_c.value > 0.0) add_k13_appendix_a_warnings(out, pair, crack->parameters, t_c.value);
+  if (crack) add_tvis_dependence_warning(out, model, crack->parameters, velocity);
   if (adhesion == models::Adhesion::negligible || adhesion == models::Adhesion::weak) {
     add_adhesion_validity_warning(out, pair, velocity, adhesion == models::Adhesion::weak);
   }

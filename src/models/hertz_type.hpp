@@ -87,6 +87,7 @@ Made<Kind> contact_model(const AdhesivePair& k, const ContactModelParameters& p,
   Made<Kind> m;
   m.normal = std::move(normal);
   m.dissipative_constant = k.dissipative_constant;
+  m.dissipative_constant_from_tvis = !p.dissipative_constant.has_value();  // adhesive_pair: then T_vis / nu^2
   m.viscous_time = p.relaxation_time.value_or(k.dissipative_constant);
   m.z0 = k.z0;
   return m;

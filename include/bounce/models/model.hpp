@@ -131,6 +131,8 @@ constexpr Engine engine_of() {
 struct ModelPhysics {
   std::optional<HertzScaling> hertz;           ///< Hertz-type forces: kappa, g*, master curves
   std::optional<double> dissipative_constant;  ///< A [s], where the model has one
+  /// A is T_vis / nu^2 (K13 after (18)), not given: the bulk damping then scales with T_vis too.
+  bool dissipative_constant_from_tvis = false;
   double viscous_time = 0.0;   ///< viscous relaxation time, for BSHP96 (B12) / BP04 (8.26)
   double z0 = 0.2e-9;          ///< equilibrium separation [m] of the Tabor parameter K13 (11)
 };
