@@ -18,6 +18,7 @@
 #include "bounce/dynamics/normal_collision.hpp"
 #include "bounce/dynamics/tangential.hpp"
 #include "bounce/pair/mixing.hpp"
+#include "neck.hpp"
 #include "warnings.hpp"
 
 namespace bounce::analysis {
@@ -361,6 +362,7 @@ CollisionOutcome collide(const Pair& pair, const models::Model& model, double ve
                                    : contact_collision(pair, model, velocity, options);
   bound_passive_cor(out, force_law ? options.integration.relative_tolerance : options.adhesive_tolerance);
   bound_trajectory(out);
+  if (model.traits.adhesion == models::Adhesion::weak) detail::add_neck_work(out, pair);  // BP04 §8.3.4
   if (model.yield_strength) add_plastic_losses(out, pair, velocity, *model.yield_strength);
   detail::add_warnings(out, pair, model, velocity);
   return out;

@@ -43,22 +43,6 @@ void bracket_downwards(StickingVelocity& s, double v, Sticks sticks) {
   }
 }
 
-// An adhesive law without damping (adhesive-viscoelastic with A = B = 0) and without plastic
-// losses keeps the impact energy: every collision bounces with e = 1, and the search went down
-// to speeds its integration cannot resolve, ending in "tighten --tolerance" (issue 40, point 6).
-void require_dissipation(const Pair& pair, const models::Model& model, double gamma) {
-  const models::NormalForceModel* law = model.force_law();
-  if (law == nullptr || !law->conservative() || model.yield_strength) return;
-  const double jkr = analytic::sticking_velocity_jkr(pair.effective_mass(), pair.effective_radius(),
-                                                     pair.effective_modulus(), gamma);  // K13 (24)
-  throw InvalidArgument("A", format_value(model.dissipative_constant.value_or(0.0)),
-                        fmt::format("A > 0 or B > 0 (or a yield strength) for a sticking velocity: without damping "
-                                    "model {}'s force (BP04 (8.56)) is conservative, so every collision bounces with "
-                                    "e = 1 and none sticks (elastic JKR, whose snap-on and pull-off dissipate, sticks "
-                                    "below {:.4g} m/s: jkr-viscoelastic --A 0)",
-                                    model.name, jkr));
-}
-
 }  // namespace
 
 StickingVelocity sticking_velocity(const Pair& pair, const models::Model& model, const CollideOptions& options,
@@ -67,7 +51,6 @@ StickingVelocity sticking_velocity(const Pair& pair, const models::Model& model,
     throw InvalidArgument("model", model.name, "an adhesive model (adhesive-viscoelastic, jkr-viscoelastic, krijt)");
   }
   const double gamma = pair.require_surface_energy("the sticking velocity");
-  require_dissipation(pair, model, gamma);
   StickingVelocity s;
   auto sticks = [&](double v) {
     ++s.collisions;
@@ -109,7 +92,8 @@ double sticking_velocity_bp04(const Pair& pair, const models::Model& model) {  /
   auto f = [&](double g) {
     return analytic::master_cor(analytic::kappa(a, c0, m, g), models::EndRule::overlap) * g - g0;
   };
-  double hi = g0;
+  if (f(g0) >= 0.0) return g0;  // no damping: e = 1, g_st = sqrt(2 W0/m)
+  double hi = 2.0 * g0;
   while (f(hi) < 0.0) hi *= 2.0;
   std::uintmax_t iterations = 200;
   const auto r = boost::math::tools::toms748_solve(f, g0, hi, boost::math::tools::eps_tolerance<double>(50), iterations);

@@ -60,7 +60,6 @@ class AdhesiveViscoelasticForce final : public NormalForceModel {
     return power_law_reference_overlap(p_.rho / p_.effective_mass, 1.5, speed);
   }
   bool adhesive() const override { return true; }
-  bool conservative() const override { return p_.a == 0.0 && p_.b == 0.0; }  // (8.57) vanishes
   double cutoff_overlap(double speed) const override { return p_.cutoff_fraction * reference_overlap(speed); }
 
  private:

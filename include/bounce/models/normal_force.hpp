@@ -41,9 +41,6 @@ class NormalForceModel {
   /// Adhesive laws have a negative potential near contact; the engine then also
   /// stops when U_K + U(xi) < 0 (the grains can never separate: they stick).
   virtual bool adhesive() const { return false; }
-  /// True where the law has no dissipative part at all (force == elastic_force): a collision
-  /// then keeps its energy, so an adhesive law without it can never stick.
-  virtual bool conservative() const { return false; }
   /// Overlap [m] at which the contact starts and ends: 0, or a small cutoff for a
   /// force that is singular at xi = 0 (BP04 footnote 2).
   virtual double cutoff_overlap(double speed) const { (void)speed; return 0.0; }

@@ -267,15 +267,17 @@ TEST(Krijt, StickingVelocityOverFigure5Ranges) {
   }
 }
 
-// BP04 (8.56) alone is conservative: without dissipation (A = B = 0) the grains leave
-// with their impact speed (e = 1 to the integration error); dissipation makes them stick
-// at low speed. The xi^{-1/4} cutoff is converged.
+// BP04 (8.56) alone is conservative: without dissipation (A = B = 0) the grains reach xi = 0
+// with their impact speed, and the neck's tensile work W0 (8.95) is the only loss: e is BP04
+// (8.98) with e(g) = 1 exactly, to the integration error. Dissipation makes them stick at low
+// speed. The xi^{-1/4} cutoff is converged.
 TEST(AdhesiveViscoelastic, ConservativeAdhesionAndCutoff) {
   const Pair pair = Pair::identical(ice(), 2e-6);
   const auto conservative = bounce::testing::model(pair, "adhesive-viscoelastic", {{"A", 0.0}, {"B", 0.0}});
   CollideOptions o;
   o.method = Method::integrate;
-  EXPECT_NEAR(cor(pair, conservative, 2.0, o), 1.0, 1e-9);
+  const double w0 = analytic::tensile_work(pair.effective_radius(), pair.effective_modulus(), *pair.surface_energy());
+  EXPECT_NEAR(cor(pair, conservative, 2.0, o), analytic::cor_adhesive_bp04(1.0, 2.0, w0, pair.effective_mass()), 1e-9);
   const auto s = bounce::testing::model(pair, "adhesive-viscoelastic", {{"A", 1.6e-10}, {"B", 1.6e-10}});
   const auto out = collide(pair, s, 3.0, o);
   EXPECT_EQ(out.outcome, Outcome::bounce);
