@@ -6,6 +6,12 @@ same scaled equation, BP04 (8.67): x'' + (5/4) x^{3/2} + kappa sqrt(x) x' = 0,
 x(0) = 0, x'(0) = 1, with the same event definitions, in one process run, and
 prints the ratios as a Markdown table (recorded in docs/benchmarks.md).
 
+`viscoelastic_vs_scipy.py BUILD whole-process` times what a user runs instead: the CLI's
+400-speed curve (issue 40, point 24) as a whole process, against a whole Python process that
+imports scipy and integrates the same 400 speeds with DOP853 (the dimensional equation of BP04
+(8.42), each speed's tolerances scaled to its xi0 and g), both curves compared; and the CLI's
+start alone (`bounce --version`), the part of the process that is not the curve.
+
 scipy's tolerances are chosen so that its error against the master curve is at
 least as small as bounce's (equal accuracy); each error is measured, not assumed.
 """
@@ -80,5 +86,57 @@ def main():
         print(f"| {rule} | {ns:.1f} ns | {scipy_typical / (ns * 1e-9):.1e}x |")
 
 
+CURVE = ["curve", "--model", "viscoelastic", "--method", "integrate", "--A", "4.9e-6", "--E", "1e10", "--nu", "0.3",
+         "--density", "1000", "--radius", "0.01", "--velocities", "0.1:10:400", "--log", "--csv"]
+# The same pair and speeds in scipy: identical spheres, E* = E / (2 (1 - nu^2)), C0 = (4/3) E* sqrt(R_eff).
+SCIPY_CURVE = r"""
+import math, sys
+import numpy as np
+from scipy.integrate import solve_ivp
+E, NU, RHO, R, A = 1e10, 0.3, 1000.0, 0.01, 4.9e-6
+e_star, r_eff, m = E / (2 * (1 - NU * NU)), R / 2, 4 / 3 * math.pi * R ** 3 * RHO / 2
+k = 4 / 3 * e_star * math.sqrt(r_eff) / m
+def rhs(t, y):
+    s = math.sqrt(max(y[0], 0.0))
+    return [y[1], -k * (y[0] * s + 1.5 * A * s * y[1])]
+def end(t, y):
+    return y[0]
+end.terminal, end.direction = True, -1
+for g in np.geomspace(0.1, 10, 400):
+    xi0 = (5 * g * g / (4 * k)) ** 0.4
+    sol = solve_ivp(rhs, (0.0, 1e3), [0.0, g], method="DOP853", rtol=1e-12, atol=[1e-12 * xi0, 1e-12 * g], events=end,
+                    first_step=1e-3 * xi0 / g)
+    print(f"{g!r},{-sol.y_events[0][0][1] / g!r}")
+"""
+
+
+def median_wall(command, repeats):
+    """Median wall time of the process with its output discarded (as `> /dev/null`), and its output."""
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+        times.append(time.perf_counter() - start)
+    return float(np.median(times)), subprocess.run(command, capture_output=True, text=True, check=True).stdout
+
+
+def whole_process(build):
+    cli = f"{build}/bin/bounce"
+    ours, csv = median_wall([cli, *CURVE], 41)
+    start, _ = median_wall([cli, "--version"], 41)
+    theirs, text = median_wall([sys.executable, "-c", SCIPY_CURVE], 3)
+    ours_e = [float(line.split(",")[1]) for line in csv.splitlines()[1:]]
+    their_e = [float(line.split(",")[1]) for line in text.splitlines()]
+    difference = max(abs(a - b) for a, b in zip(ours_e, their_e))
+    print("| whole process, 400 speeds | bounce curve | of it, the start (`--version`) | python + scipy DOP853 | "
+          "largest difference of e | ratio |")
+    print("|---|---|---|---|---|---|")
+    print(f"| viscoelastic, A = 4.9e-6 s, 0.1-10 m/s | {ours * 1e3:.1f} ms | {start * 1e3:.1f} ms | "
+          f"{theirs * 1e3:.0f} ms | {difference:.1e} | {theirs / ours:.0f}x |")
+
+
 if __name__ == "__main__":
-    main()
+    if len(sys.argv) > 2 and sys.argv[2] == "whole-process":
+        whole_process(sys.argv[1])
+    else:
+        main()

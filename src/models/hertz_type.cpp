@@ -13,6 +13,7 @@
 #include "bounce/core/error.hpp"
 #include "bounce/models/krijt.hpp"
 #include "bounce/models/registry.hpp"
+#include "bounce/pair/material.hpp"
 
 namespace bounce::models::detail {
 
@@ -47,13 +48,20 @@ double shortest_contact_time(const Pair& pair) {  // BSHP96 (A13) at g = c_t
   return contact::hertz::collision_time(pair.hertz_constant(), pair.effective_mass(), pair.transversal_sound_speed());
 }
 
+// The bound falls with t_H(c_t): a modulus typed in the wrong unit (E = 1e30 Pa) shrinks it, and
+// the refusal of T_vis or A then asks about E (as the impact velocity's does, issue 40 point 4).
 double require_short_viscous_time(const Pair& pair, double value, const std::string& name, const std::string& what) {
   const double t_h = shortest_contact_time(pair);
   if (value <= longest_viscous_time_ratio * t_h) return value;
+  std::string question = youngs_modulus_unit_question("E", pair.body1().material.youngs_modulus);
+  if (question.empty() && !pair.body2().rigid) {
+    question = youngs_modulus_unit_question("E2", pair.body2().material.youngs_modulus);
+  }
   throw InvalidArgument(name, format_value(value),
                         fmt::format("{} <= {:.3g} s, {:g} times the shortest elastic contact time of the pair, t_H(c_t) = "
-                                    "{:.3g} s: the viscous models need it << the contact time (BSHP96 (B12))",
-                                    what, longest_viscous_time_ratio * t_h, longest_viscous_time_ratio, t_h));
+                                    "{:.3g} s: the viscous models need it << the contact time (BSHP96 (B12)){}",
+                                    what, longest_viscous_time_ratio * t_h, longest_viscous_time_ratio, t_h,
+                                    question.empty() ? "" : "; " + question));
 }
 
 // One of A, the viscosities or T_vis is given (the parameter table's rule, checked where the

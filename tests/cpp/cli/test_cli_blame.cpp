@@ -83,6 +83,18 @@ TEST(Blame, ViscousTimesBeyondTheBoundAreRefused) {
                   "--tvis", "1e300");
 }
 
+// E = 1e30 Pa shrinks t_H(c_t) to 2e-19 s, and T_vis = 1e-11 s (K13's ice value) is refused by
+// the bound; the refusal named --tvis only (the sweep's finding, docs/hardening.md): it asks
+// about E's unit now, as the impact velocity's refusal does (point 4).
+TEST(Blame, ViscousBoundShrunkByAnImplausibleModulusAsksAboutItsUnit) {
+  const std::vector<std::string> args{"collide", "--material", "water-ice", "--radius", "1e-6", "--E", "1e30",
+                                      "--model", "krijt", "--tvis", "1e-11", "--velocity", "1"};
+  expect_rejected(args, "--tvis", "1e-11");
+  const std::string err = run_cli(args).err;
+  EXPECT_TRUE(has(err, "E = 1e+30 Pa is outside")) << err;
+  EXPECT_TRUE(has(err, "is it in the unit [Pa]")) << err;
+}
+
 // Within the bound but as long as the contact itself: accepted, the first line of output says
 // the result describes no real collision (docs/models.md).
 TEST(Blame, ViscousTimeLongerThanTheContactIsWarnedFirst) {
