@@ -141,7 +141,7 @@ std::vector<ParameterSpec> every_model() {
                        "model takes: bounce models)"),
       // K13 Fig 7 finds Y / E_soft from 1e-3 to the theoretical 0.2; at 1 no collision yields.
       fittable(real_parameter("yield", "yield strength Y", "Pa", positive(),
-                              "yield strength Y [Pa]: adds Thornton-Ning plastic losses, K13 (28)-(30)"),
+                              "yield strength Y [Pa] (<= the softer body's E): adds Thornton-Ning plastic losses, K13 (28)-(30)"),
                {1e-4, 1.0, 100, "E_soft"}),
       real_parameter("friction", "friction coefficient mu", "", non_negative(), "friction coefficient mu (BSHP96 (36))"),
       // At least 1e-20 m, far below any roughness (the property tests reach 5e-15 m: 1e-7 of a
@@ -204,6 +204,19 @@ std::optional<TangentialModel> tangential_model(const Pair& pair, const Paramete
   }
   validate(t);
   return t;
+}
+
+// Y above the softer body's E is a yield strain above 1: no collision below c_t yields, and K13
+// (29)'s yield velocity overflowed at Y = 1e300 Pa. K13 Fig 7 finds Y / E_soft from 1e-3 to 0.2;
+// `bounce fit`'s grid ends at 1.
+void require_yield_within_modulus(const Pair& pair, double yield) {
+  const double e1 = pair.body1().material.youngs_modulus, e2 = pair.body2().material.youngs_modulus;
+  const double soft = pair.body2().rigid ? e1 : std::min(e1, e2);
+  if (yield <= soft) return;
+  throw InvalidArgument("yield", format_value(yield),
+                        fmt::format("a yield strength Y <= E_soft = {:g} Pa, the softer body's Young modulus (a yield "
+                                    "strain above 1 describes no material; K13 Fig 7 finds Y / E_soft of 1e-3 to 0.2)",
+                                    soft));
 }
 
 // The end rule given, if the model declares it (Traits::end_rules).
@@ -284,6 +297,7 @@ Model make_model(const Pair& pair, std::string_view name, const Parameters& p) {
   m.traits = row.traits;
   m.end_rule = c.end_rule;
   m.yield_strength = p.real("yield");
+  if (m.yield_strength) require_yield_within_modulus(pair, *m.yield_strength);
   m.tangential = tangential_model(pair, p);
   return m;
 }

@@ -95,6 +95,17 @@ TEST(Blame, ViscousBoundShrunkByAnImplausibleModulusAsksAboutItsUnit) {
   EXPECT_TRUE(has(err, "is it in the unit [Pa]")) << err;
 }
 
+// --yield 1e300 ended in exit 3 "closed_forms.yield_velocity = inf" (K13 (29) overflows); a
+// yield strength above the softer body's E (a yield strain above 1) is refused, naming E_soft.
+TEST(Blame, YieldStrengthAboveTheModulusIsRefused) {
+  const std::vector<std::string> args{"collide", "--material", "water-ice", "--radius", "1e-6", "--model", "krijt",
+                                      "--tvis", "1e-11", "--velocity", "1", "--yield", "1e300"};
+  expect_rejected(args, "--yield", "1e300");
+  EXPECT_TRUE(has(run_cli(args).err, "E_soft = 7e+09 Pa")) << run_cli(args).err;
+  EXPECT_EQ(run_cli({"collide", "--material", "water-ice", "--radius", "1e-6", "--model", "krijt", "--tvis", "1e-11",
+                     "--velocity", "1", "--yield", "7e9"}).exit_code, 0);
+}
+
 // Within the bound but as long as the contact itself: accepted, the first line of output says
 // the result describes no real collision (docs/models.md).
 TEST(Blame, ViscousTimeLongerThanTheContactIsWarnedFirst) {
