@@ -61,10 +61,25 @@ void check_zone_range(const AdhesivePair& k) {
                                     largest, k.effective_radius, h0 / k.z0));
 }
 
+// Toward DMT (lambda -> 0) the Maugis-Dugdale branch is DMT's to 2 lambda^1.5 (docs/contact.md),
+// and its search failed below lambda ~ 1e-25 (gamma = 1e-40 J/m^2 for 1 um ice: toms748 "do not
+// bracket the root", exit 4). Below 1e-12 (DMT's to 2e-18) the model is refused, naming gamma.
+constexpr double least_lambda = 1e-12;
+void check_dmt_end(const AdhesivePair& k) {
+  const double lambda = contact::surface::maugis_parameter(k.effective_radius, k.effective_modulus, k.surface_energy, k.z0);
+  if (lambda >= least_lambda) return;
+  throw InvalidArgument("gamma", format_value(k.surface_energy),
+                        fmt::format("a Maugis parameter lambda >= {:g} for maugis-viscoelastic (lambda = {:.3g} from "
+                                    "gamma, R_eff = {:g} m, E* = {:.3g} Pa, z0 = {:g} m): below it the contact is "
+                                    "DMT's to 2 lambda^1.5 and its adhesion negligible (use viscoelastic)",
+                                    least_lambda, lambda, k.effective_radius, k.effective_modulus, k.z0));
+}
+
 // The branch for the pair, and per DEM contact the branch at its R_eff, held by a cache.
 Made<AdhesiveContact> make_maugis_viscoelastic(const Pair& pair, const ContactModelParameters& p, const Context& c) {
   const AdhesivePair k = detail::adhesive_pair(pair, p, "maugis-viscoelastic");
   check_zone_range(k);
+  check_dmt_end(k);
   auto branches = std::make_shared<const BranchesByRadius>(k.effective_modulus, k.surface_energy, k.z0);
   const auto at = [branches](double r) -> const AdhesiveGeometry& {
     // The geometry outlives the call: the cache keeps it (or, past its size, this thread's last).

@@ -106,6 +106,19 @@ TEST(Blame, YieldStrengthAboveTheModulusIsRefused) {
                      "--velocity", "1", "--yield", "7e9"}).exit_code, 0);
 }
 
+// maugis-viscoelastic --gamma 1e-300 ended in exit 4 (toms748 "do not bracket the root" from the
+// Maugis-Dugdale branch at lambda ~ 1e-200); below lambda = 1e-12 it is refused, naming gamma.
+TEST(Blame, MaugisFarTowardDmtIsRefusedNamingGamma) {
+  for (const char* gamma : {"1e-300", "1e-40"}) {
+    const std::vector<std::string> args{"collide", "--material", "water-ice", "--radius", "1e-6", "--model",
+                                        "maugis-viscoelastic", "--tvis", "1e-11", "--gamma", gamma, "--velocity", "1"};
+    expect_rejected(args, "--gamma", gamma);
+    EXPECT_TRUE(has(run_cli(args).err, "Maugis parameter lambda >= 1e-12")) << run_cli(args).err;
+  }
+  EXPECT_EQ(run_cli({"collide", "--material", "water-ice", "--radius", "1e-6", "--model", "maugis-viscoelastic",
+                     "--tvis", "1e-11", "--gamma", "1e-10", "--velocity", "1"}).exit_code, 0);
+}
+
 // Within the bound but as long as the contact itself: accepted, the first line of output says
 // the result describes no real collision (docs/models.md).
 TEST(Blame, ViscousTimeLongerThanTheContactIsWarnedFirst) {
