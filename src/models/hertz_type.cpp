@@ -50,6 +50,14 @@ double shortest_contact_time(const Pair& pair) {  // BSHP96 (A13) at g = c_t
 
 // The bound falls with t_H(c_t): a modulus typed in the wrong unit (E = 1e30 Pa) shrinks it, and
 // the refusal of T_vis or A then asks about E (as the impact velocity's does, issue 40 point 4).
+}  // namespace bounce::models::detail
+
+namespace bounce::models {
+double longest_viscous_time(const Pair& pair) { return detail::longest_viscous_time_ratio * detail::shortest_contact_time(pair); }
+}  // namespace bounce::models
+
+namespace bounce::models::detail {
+
 double require_short_viscous_time(const Pair& pair, double value, const std::string& name, const std::string& what) {
   const double t_h = shortest_contact_time(pair);
   if (value <= longest_viscous_time_ratio * t_h) return value;

@@ -118,10 +118,14 @@ Model make_model(const Pair& pair, std::string_view name, const Parameters& para
 /// The same from unchecked inputs (binds them first).
 Model make_model(const Pair& pair, std::string_view name, const ParameterInputs& inputs = {});
 
-/// The model `name` as a DEM contact law for a pair of materials (the pair's radii and masses
-/// are replaced per contact): its normal law, end rule and tangential law. InvalidArgument
-/// ("model", …) for a model without one.
+/// The model `name` as a DEM law for a pair of materials (the pair's radii and masses are
+/// replaced per contact): the DEM form of its normal law (made by its one factory, every model
+/// has one), its end rule and tangential law.
 DemModel make_dem_model(const Pair& pair, std::string_view name, const Parameters& parameters);
+
+/// The longest viscous time (A or T_vis) a model takes for the pair: 1e6 times its shortest
+/// elastic contact time t_H(c_t), BSHP96 (A13) at the sound speed (docs/models.md, "Validity").
+double longest_viscous_time(const Pair& pair);
 
 /// BP04 (8.38): A = (1/3) (3 eta2 - eta1)^2 / (3 eta2 + 2 eta1) (1 - nu^2)(1 - 2 nu) / (E nu^2).
 double dissipative_constant_from_viscosities(double shear_viscosity, double bulk_viscosity,
