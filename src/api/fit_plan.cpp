@@ -155,11 +155,6 @@ Case detail::trial_case(const detail::Plan& plan, std::span<const double> values
   return detail::make_case(b);
 }
 
-double detail::soft_modulus(const Pair& pair) {
-  const double e1 = pair.body1().material.youngs_modulus, e2 = pair.body2().material.youngs_modulus;
-  return pair.body2().rigid ? e1 : std::min(e1, e2);
-}
-
 detail::Plan detail::make_plan(const Bound& bound, const Inputs& inputs, const std::string& model) {
   detail::Plan plan;
   plan.model = model;
@@ -181,7 +176,7 @@ detail::Plan detail::make_plan(const Bound& bound, const Inputs& inputs, const s
   plan.bound = bind_inputs(command("fit"), plan.fixed);
   const Pair& pair = plan.pair.emplace(bounce::make_pair(bound.pair));
   plan.gamma_l = pair.surface_energy();
-  plan.e_soft = soft_modulus(pair);
+  plan.e_soft = pair.soft_modulus();
   const auto grids = given_grids(bound.own.text("grid"), plan.fitted);
   for (const ParameterSpec& s : plan.fitted) {
     const auto it = grids.find(s.name);

@@ -23,9 +23,6 @@ struct Plan {
   double e_soft = 0.0;
 };
 
-/// E_soft, the smaller Young's modulus of the two bodies (a rigid wall's is not), by which
-/// K13 Fig 7 (b) normalises the yield strength.
-double soft_modulus(const Pair& pair);
 /// K13 Fig 7 (b): Y / E_soft reaches the theoretical strength 0.2 at most; the fit's default
 /// grid goes on to 1 (where no collision yields), a posterior's prior stops here.
 constexpr double theoretical_yield_over_e_soft = 0.2;

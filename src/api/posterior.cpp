@@ -30,7 +30,7 @@ std::vector<std::array<double, 2>> Likelihood::ranges() const {
     first.push_back(a.values.front());
   }
   if (p.yield_axis) {
-    const double bound = detail::theoretical_yield_over_e_soft * detail::soft_modulus(p.case_at(first).pair);
+    const double bound = detail::theoretical_yield_over_e_soft * p.case_at(first).pair.soft_modulus();
     out.push_back({p.yield_axis->values.front(), std::min(p.yield_axis->values.back(), bound)});
   }
   return out;

@@ -210,8 +210,7 @@ std::optional<TangentialModel> tangential_model(const Pair& pair, const Paramete
 // (29)'s yield velocity overflowed at Y = 1e300 Pa. K13 Fig 7 finds Y / E_soft from 1e-3 to 0.2;
 // `bounce fit`'s grid ends at 1 (its end, exp(log E_soft), may round above E_soft: 1e-12 spare).
 void require_yield_within_modulus(const Pair& pair, double yield) {
-  const double e1 = pair.body1().material.youngs_modulus, e2 = pair.body2().material.youngs_modulus;
-  const double soft = pair.body2().rigid ? e1 : std::min(e1, e2);
+  const double soft = pair.soft_modulus();
   if (yield <= soft * (1.0 + 1e-12)) return;
   throw InvalidArgument("yield", format_value(yield),
                         fmt::format("a yield strength Y <= E_soft = {:g} Pa, the softer body's Young modulus (a yield "

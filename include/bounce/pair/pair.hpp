@@ -4,6 +4,7 @@
 // material (which defaults to body 1's); an ideally rigid wall is an explicit
 // choice (docs/decisions.md D1).
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -46,6 +47,12 @@ class Pair {
   double hertz_compliance_d() const noexcept;                               ///< D = 3/(4E*) [1/Pa]
   double hertz_constant() const noexcept;                                   ///< rho [N/m^{3/2}]
   double tangential_mass_factor() const noexcept { return kappa_; }         ///< kappa, BSHP96 (8)
+  /// E_soft [Pa], the smaller Young's modulus of the two bodies (a rigid wall's is not): K13
+  /// Fig 7 (b) normalises the yield strength by it.
+  double soft_modulus() const noexcept {
+    return body2_.rigid ? body1_.material.youngs_modulus
+                        : std::min(body1_.material.youngs_modulus, body2_.material.youngs_modulus);
+  }
   /// Combined work of adhesion gamma [J/m^2], if both materials have one.
   std::optional<double> surface_energy() const noexcept { return surface_energy_; }
   /// gamma, or InvalidArgument("gamma", "(not given)", …) naming `law` as the
