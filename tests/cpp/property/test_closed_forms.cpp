@@ -22,7 +22,8 @@ namespace {
 
 // A model of the registry with A / t_H log-uniform over [1e-6, 1e4] at the speed (BSHP96 (B12)
 // asks for A << t_c; users type T_vis = 1e-8 s for 10 nm grains, A / t_H ~ 1e4), and for krijt
-// T_vis = f A, f = nu^2 in [1e-4, 0.24]; an optional yield strength (K13 (28)-(29)).
+// T_vis = f A, f = nu^2 in [1e-4, 0.24]; an optional yield strength (K13 (28)-(29)), Y / E_soft
+// log-uniform over [1e-4, 1] (a yield strain above 1 is refused: docs/hardening.md).
 ModelCase wide_model(const Pair& pair, double speed) {
   const auto names = models::model_registry().names_where([](const models::ModelRow&) { return true; });
   ModelCase c{*rc::gen::elementOf(names), {}};
@@ -37,7 +38,7 @@ ModelCase wide_model(const Pair& pair, double speed) {
   } else if (auto g = model_parameters(c.name, pair, speed)) {
     c = *(*g);
   }
-  if (*rc::gen::inRange(0, 2) == 1) c.inputs["yield"] = *log_uniform(1e5, 1e10);
+  if (*rc::gen::inRange(0, 2) == 1) c.inputs["yield"] = *log_uniform(1e-4, 1.0) * pair.soft_modulus();
   return c;
 }
 
