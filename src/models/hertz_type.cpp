@@ -50,17 +50,9 @@ double shortest_contact_time(const Pair& pair) {  // BSHP96 (A13) at g = c_t
 
 // The bound falls with t_H(c_t): a modulus typed in the wrong unit (E = 1e30 Pa) shrinks it, and
 // the refusal of T_vis or A then asks about E (as the impact velocity's does, issue 40 point 4).
-}  // namespace bounce::models::detail
-
-namespace bounce::models {
-double longest_viscous_time(const Pair& pair) { return detail::longest_viscous_time_ratio * detail::shortest_contact_time(pair); }
-}  // namespace bounce::models
-
-namespace bounce::models::detail {
-
 double require_short_viscous_time(const Pair& pair, double value, const std::string& name, const std::string& what) {
-  const double t_h = shortest_contact_time(pair);
-  if (value <= longest_viscous_time_ratio * t_h) return value;
+  const double longest = longest_viscous_time(pair), t_h = shortest_contact_time(pair);
+  if (value <= longest) return value;
   std::string question = youngs_modulus_unit_question("E", pair.body1().material.youngs_modulus);
   if (question.empty() && !pair.body2().rigid) {
     question = youngs_modulus_unit_question("E2", pair.body2().material.youngs_modulus);
@@ -68,7 +60,7 @@ double require_short_viscous_time(const Pair& pair, double value, const std::str
   throw InvalidArgument(name, format_value(value),
                         fmt::format("{} <= {:.3g} s, {:g} times the shortest elastic contact time of the pair, t_H(c_t) = "
                                     "{:.3g} s: the viscous models need it << the contact time (BSHP96 (B12)){}",
-                                    what, longest_viscous_time_ratio * t_h, longest_viscous_time_ratio, t_h,
+                                    what, longest, longest_viscous_time_ratio, t_h,
                                     question.empty() ? "" : "; " + question));
 }
 
@@ -142,3 +134,11 @@ AdhesiveRelease adhesive_release(EndRule rule) {
 }
 
 }  // namespace bounce::models::detail
+
+namespace bounce::models {
+
+double longest_viscous_time(const Pair& pair) {
+  return detail::longest_viscous_time_ratio * detail::shortest_contact_time(pair);
+}
+
+}  // namespace bounce::models
