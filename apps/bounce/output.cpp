@@ -173,6 +173,9 @@ int run_guarded(const std::function<int()>& body, const std::set<std::string>& o
   } catch (const NumericalError& e) {
     std::cerr << "bounce: numerical error: " << e.what() << '\n';
     return 3;
+  } catch (const InstallationError& e) {
+    std::cerr << "bounce: installation error: " << e.what() << '\n';
+    return 3;
   } catch (const std::bad_alloc&) {  // every output is bounded (docs/cli.md, "Memory"): a machine too small
     std::cerr << "bounce: numerical error: out of memory: the computation does not fit in this machine's memory\n";
     return 3;

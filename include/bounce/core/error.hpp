@@ -47,4 +47,10 @@ class NumericalError : public Error {
   using Error::Error;
 };
 
+/// A part of bounce's installation is missing or from another build (a module: core/module.hpp).
+class InstallationError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace bounce

@@ -12,6 +12,7 @@
 
 #include "bounce/analysis/atlas.hpp"
 #include "bounce/core/error.hpp"
+#include "atlas_file_module.hpp"
 
 namespace bounce::analysis {
 
@@ -184,7 +185,7 @@ void write_contents(hid_t file, const Atlas& a, const std::string& path) {
 
 }  // namespace
 
-void write_atlas(const Atlas& atlas, const std::string& path) {
+void detail::write_atlas_hdf5(const Atlas& atlas, const std::string& path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const std::string temporary = path + ".writing";
   {
@@ -208,3 +209,9 @@ void write_atlas(const Atlas& atlas, const std::string& path) {
 std::uint32_t atlas_digest(const Atlas& atlas) { return digest(atlas); }
 
 }  // namespace bounce::analysis
+
+const bounce::analysis::detail::AtlasFileModule* bounce_atlas_file_module() {
+  static const bounce::analysis::detail::AtlasFileModule module{bounce::analysis::detail::write_atlas_hdf5,
+                                                                 bounce::analysis::detail::read_atlas_hdf5};
+  return &module;
+}

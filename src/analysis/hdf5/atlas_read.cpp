@@ -8,7 +8,8 @@
 #include <fmt/format.h>
 
 #include "bounce/analysis/atlas.hpp"
-#include "atlas_grid.hpp"
+#include "../atlas_grid.hpp"
+#include "atlas_file_module.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/pair/material.hpp"
 
@@ -223,7 +224,7 @@ void read_grid(const Reader& r, hid_t file, Atlas& a) {
 
 }  // namespace
 
-Atlas read_atlas(const std::string& path, const std::string& expected_model) {
+Atlas detail::read_atlas_hdf5(const std::string& path, const std::string& expected_model) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   Reader r(path);
   std::error_code ec;
@@ -254,26 +255,6 @@ Atlas read_atlas(const std::string& path, const std::string& expected_model) {
   }
   a.prepare(path);
   return a;
-}
-
-std::string atlas_csv(const Atlas& a) {
-  std::string out = "reduced_radius,effective_density,v_stick,velocity,cor,contact_time,bulk_fraction,crack_fraction\n";
-  for (std::size_t ix = 0; ix < a.x.count; ++ix) {
-    for (std::size_t iy = 0; iy < a.y.count; ++iy) {
-      const std::size_t node = ix * a.y.count + iy;
-      if (a.defined[node] == 0) continue;
-      const double vs = a.node_v_stick(ix, iy);
-      for (std::size_t iz = 0; iz < a.z.count; ++iz) {
-        const double gap = std::exp(a.z.value(iz)), v = vs + gap;
-        if (v < a.velocity_min || v > a.velocity_max) continue;
-        const double eps = a.value(AtlasField::cor_factor, ix, iy, iz) * std::sqrt(gap / v);
-        out += fmt::format("{},{},{},{},{},{},{},{}\n", std::exp(a.x.value(ix)), std::exp(a.y.value(iy)), vs, v, eps,
-                           std::exp(a.value(AtlasField::ln_contact_time, ix, iy, iz)),
-                           a.value(AtlasField::bulk_fraction, ix, iy, iz), a.value(AtlasField::crack_fraction, ix, iy, iz));
-      }
-    }
-  }
-  return out;
 }
 
 }  // namespace bounce::analysis
