@@ -6,7 +6,8 @@
 #   scripts/check-package.sh [--lmp LMP] --prefix P   check the tree installed under P (/usr after
 #                                                     `apt install ./dist/*.deb`, or `cmake --install`)
 #
-# The checks: bin/bounce --version prints the project's version; a collision runs; the man page
+# The checks: bin/bounce --version prints the project's version; a collision runs; its HDF5 and
+# MPI modules open (an atlas read, a batch under mpirun); the man page
 # (when installed) names the commands; the bash completion completes a command, a model and a
 # material; `import bounce` from another folder gives the same __version__, with its type stubs;
 # examples/consumer configures against the installed CMake package, builds and runs; and with
@@ -65,6 +66,24 @@ step "$got"
 "$cli" collide --material water-ice --radius 2e-6 --model krijt --tvis 1e-11 --velocity 8 --json > "$work/collide.json"
 /usr/bin/python3 -c "import json, sys; r = json.load(open(sys.argv[1])); assert 0 < r['cor'] < 1 and r['outcome'] == 'bounce', r['cor']; \
 print('bounce check: collide: cor', r['cor'], r['outcome'])" "$work/collide.json"
+
+# The modules (docs/architecture.md, "Modules"): reading a missing atlas gets as far as the HDF5
+# module's "no such file" (exit 2, where a module not installed is exit 3), and under mpirun a
+# missing batch manifest is read after the MPI module started.
+expect_refusal() {  # expect_refusal TEXT COMMAND...: exit 2 with TEXT on stderr
+  local text=$1 code=0
+  shift
+  "$@" > /dev/null 2> "$work/refusal.txt" || code=$?
+  [ "$code" = 2 ] && grep -q "$text" "$work/refusal.txt" ||
+    fail "$* = exit $code ($(head -c 300 "$work/refusal.txt")) is invalid: expected exit 2 and $text"
+}
+expect_refusal "no such file" "$cli" atlas query "$work/missing.h5" --radius 1e-6 --velocity 1
+step "atlas module: $(ls "$prefix"/lib/*/bounce/atlas_hdf5.so "$prefix"/lib/bounce/atlas_hdf5.so 2>/dev/null | head -1)"
+if command -v mpirun > /dev/null; then
+  expect_refusal "readable TOML manifest" env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+    mpirun --oversubscribe -np 2 "$cli" fit --batch "$work/missing.toml"
+  step "mpi module: mpirun -np 2 bounce fit --batch"
+fi
 
 # The man page and the bash completion.
 man="$prefix/share/man/man1/bounce.1.gz"
