@@ -47,6 +47,7 @@ TrajectorySample trajectory_sample(const models::NormalForceModel& model, const 
 CollisionOutcome integrate_normal_collision(const models::NormalForceModel& model,
                                             double effective_mass, double speed,
                                             const NormalCollisionOptions& options) {
+  model.check_speed(speed);
   const double xi0 = model.reference_overlap(speed);
   const double time_unit = xi0 / speed;
   const double energy_unit = effective_mass * speed * speed;

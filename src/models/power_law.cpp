@@ -1,7 +1,11 @@
 // `power-law`: F = m_eff (D1 xi^alpha + D2 xi^gamma sgn(xi') |xi'|^beta), BP04 (8.63)-(8.69).
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "bounce/contact/hertz.hpp"
+#include "bounce/core/error.hpp"
+#include "bounce/core/checks.hpp"
 #include "bounce/models/dem_law.hpp"
 #include "bounce/models/normal_force.hpp"
 #include "factories.hpp"
@@ -22,6 +26,8 @@ double power_law_energy(const PowerLawParameters& p, double m, double xi) {
   return xi <= 0.0 ? 0.0 : m * p.d1 * std::pow(xi, p.alpha + 1.0) / (p.alpha + 1.0);
 }
 
+constexpr double max_kappa = 1e2;
+
 class PowerLawForce final : public NormalForceModel {
  public:
   PowerLawForce(const PowerLawParameters& p, double m, double radius) : p_(p), m_(m), radius_(radius) {}
@@ -38,6 +44,21 @@ class PowerLawForce final : public NormalForceModel {
   double contact_radius(double xi) const override { return contact::hertz::contact_radius(radius_, xi); }
   double reference_overlap(double speed) const override {  // BP04 (8.65)
     return power_law_reference_overlap(p_.d1, p_.alpha, speed);
+  }
+  // BP04 (8.68)'s scaled damping kappa = D2 xi0^(1+gamma) g^(beta-2) (its (8.67) prints the two
+  // exponents the other way round). Far above 1 the contact is overdamped and creeps apart for
+  // about kappa contact times, and an explicit step follows it at ~1/kappa: at kappa = 1e3 (gamma = 0)
+  // the integration's 2e6 steps end before it parts.
+  void check_speed(double speed) const override {
+    const double xi0 = reference_overlap(speed);
+    const double kappa = p_.d2 * std::pow(xi0, 1.0 + p_.gamma) * std::pow(speed, p_.beta - 2.0);
+    if (!(kappa > max_kappa)) return;
+    throw InvalidArgument(
+        "power_d2", format_value(p_.d2),
+        fmt::format("a damping under which the grains part: kappa = D2 xi0^(1+gamma) g^(beta-2) (BP04 (8.68)) <= {:g} at this "
+                    "impact speed g = {:g} m/s, where it is {:.3g} (xi0 = {:.3g} m, BP04 (8.65), with --power-d1 = {:g}): "
+                    "an overdamped contact creeps apart for about kappa contact times",
+                    max_kappa, speed, kappa, xi0, p_.d1));
   }
 
  private:

@@ -44,6 +44,9 @@ class NormalForceModel {
   /// Overlap [m] at which the contact starts and ends: 0, or a small cutoff for a
   /// force that is singular at xi = 0 (BP04 footnote 2).
   virtual double cutoff_overlap(double speed) const { (void)speed; return 0.0; }
+  /// Refuses an impact speed g at which the law cannot be integrated (an InvalidArgument naming
+  /// the parameter to change); every g by default.
+  virtual void check_speed(double speed) const { (void)speed; }
 };
 
 /// BP04 (8.65) for an elastic force m D1 xi^alpha: the maximal overlap at impact speed g,

@@ -102,3 +102,16 @@ TEST(CorRange, RandomCollisionsAndCurvesPrintNoCorOutsideTheUnitInterval) {
   EXPECT_GE(printed, 30);
   EXPECT_GE(cors, 200);
 }
+
+// An overdamped contact creeps apart with a rebound speed near 0 that the event location placed a
+// hair below it: main printed cor = -7.96e-15 (viscoelastic integrated at A = 1e3 t_H) and
+// -8.6e-13 (a linear power law at kappa = 90). Within the tolerance that is 0.
+TEST(CorRange, OverdampedIntegrationsPrintNoNegativeCor) {
+  const Record viscous = api::collide({{"material", "water-ice"}, {"radius", "1e-6"}, {"model", "viscoelastic"},
+                                       {"method", "integrate"}, {"A", "1e-5"}, {"velocity", "1"}});
+  check_cors(viscous, "viscoelastic A = 1e-5 s");
+  const Record linear = api::collide({{"material", "water-ice"}, {"radius", "1e-6"}, {"model", "power-law"},
+                                      {"power_d1", "1e10"}, {"power_d2", "9e6"}, {"power_alpha", "1"},
+                                      {"power_gamma", "0"}, {"power_beta", "1"}, {"velocity", "1"}});
+  check_cors(linear, "power law kappa = 90");
+}

@@ -2,6 +2,7 @@
 // caused it, not the one that happened to be checked.
 #include <chrono>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -164,4 +165,27 @@ TEST(Blame, FollowThatCannotSettleIsRefusedWithItsBound) {
                                       "jkr-viscoelastic", "--A", "0", "--velocity", "1", "--follow", "1e3"};
   expect_rejected(args, "--follow", "1e3");
   EXPECT_TRUE(has(run_cli(args).err, "expected a follow time <= ")) << run_cli(args).err;
+}
+
+// The sweep of extreme inputs (docs/hardening.md, round 3): a power law whose damping overwhelms its
+// elastic force (BP04 (8.68)'s kappa = 1e183 from D1 = 1e-300, 1e294 from D2 = 1e300) ended in
+// exit 3 "state became non-finite at scaled time 0.001", in the integrator's words.
+TEST(Blame, OverdampedPowerLawNamesItsDamping) {
+  const std::vector<std::string> base{"collide", "--material", "water-ice", "--radius", "1e-6", "--velocity", "1",
+                                      "--model", "power-law"};
+  for (const auto& [d1, d2, kappa] : {std::tuple{"1e-300", "1e3", "1.14e+183"}, std::tuple{"1e10", "1e300", "1.14e+294"},
+                                      std::tuple{"1e10", "1e10", "1.14e+04"}}) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), {"--power-d1", d1, "--power-d2", d2});
+    expect_rejected(args, "--power-d2", d2);
+    const std::string err = run_cli(args).err;
+    EXPECT_TRUE(has(err, std::string("where it is ") + kappa)) << err;
+    EXPECT_TRUE(has(err, "kappa = D2 xi0^(1+gamma) g^(beta-2) (BP04 (8.68)) <= 100")) << err;
+  }
+  // Below the bound it is integrated: kappa = 91, e ~ 1.6e-9.
+  std::vector<std::string> args = base;
+  args.insert(args.end(), {"--power-d1", "1e10", "--power-d2", "8e7", "--json"});
+  const auto r = run_cli(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_LT(nlohmann::json::parse(r.out).at("cor").get<double>(), 1e-8);
 }
