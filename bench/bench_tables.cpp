@@ -16,7 +16,9 @@ const bounce::Pair& pair() {
 }
 const bounce::models::Model& model() {
   static const bounce::models::Model m = bounce::models::make_model(
-      pair(), "viscoelastic", {{"A", 1e-6}, {"asperity", 2e-4 * pair().effective_radius()}, {"friction", std::sqrt(2e-4)}});
+      pair(), "viscoelastic",
+      {{"A", 1e-6}, {"asperity", 2e-4 * pair().effective_radius()}, {"friction", std::sqrt(2e-4)},
+       {"asperity_form", "published"}});  // the form a table holds
   return m;
 }
 const bounce::analysis::TangentialTable& table() {

@@ -32,6 +32,9 @@ import lammps_runs as L  # noqa: E402
 # Soft viscoelastic grains: E = 1e7 Pa, R = 1 mm, density 1000, A = 3e-6 s (eps ~ 0.89 at 1 m/s,
 # t_c = 1.4e-4 s); dt = 3e-6 s.
 E, NU, A, RADIUS, DENSITY = 1e7, 0.3, 3e-6, 1e-3, 1000.0
+# The asperity law with its form named: the default since issue 40 (passive), which a plugin
+# from before took as published, so that `against` compares the same law.
+ROUGH = "friction 0.3 asperity 1e-6 asperity_form passive"
 
 
 def section(output, name):
@@ -164,7 +167,7 @@ def bed_per_contact():
         data = settled_bed(work)
         for friction in (False, True):
             tangential = "tangential linear_history 1e3 0 0.3" if friction else "tangential linear_nohistory 0 0"
-            rough = " friction 0.3 asperity 1e-6" if friction else ""
+            rough = " " + ROUGH if friction else ""
             styles = [("pair granular hertz/material + viscoelastic", "granular", f"{stock} {tangential}", wall_stock),
                       ("pair_style bounce viscoelastic (plain)", "bounce integration plain", ours + rough, wall_ours),
                       ("pair_style bounce viscoelastic (corrected)", "bounce", ours + rough, wall_ours)]
@@ -240,7 +243,7 @@ def krijt_other_k_cost():
 
 
 def scaling():
-    coeff = f"viscoelastic E {E!r} nu {NU} A {A} friction 0.3 asperity 1e-6"
+    coeff = f"viscoelastic E {E!r} nu {NU} A {A} {ROUGH}"
     cells, steps = 47, 300
     times = {}
     for cores in (1, 2):
@@ -265,7 +268,7 @@ def against(other, reps=7):
     mass = 4.0 / 3.0 * 3.141592653589793 * RADIUS ** 3 * DENSITY
     eta = 2 * A * E / (2 * (1 - NU * NU)) / (mass / 2)
     stock = f"hertz/material {E!r} {eta!r} {NU} damping viscoelastic tangential linear_nohistory 0 0"
-    ours = f"viscoelastic E {E!r} nu {NU} A {A} friction 0.3 asperity 1e-6"
+    ours = f"viscoelastic E {E!r} nu {NU} A {A} {ROUGH}"
     runs = [("pair granular (frictionless)", "granular", stock, L.PLUGIN), (f"bounce, {other}", "bounce", ours, other),
             ("bounce, this build", "bounce", ours, L.PLUGIN)]
     best, mine = {}, L.PLUGIN

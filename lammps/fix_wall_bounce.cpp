@@ -8,8 +8,10 @@
 #include <exception>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "fix.h"
 #include "memory.h"
@@ -22,6 +24,7 @@
 #include "bounce/dem/contact.hpp"
 #include "rigid_masses.h"
 #include "stop.h"
+#include "type_laws.h"
 
 using namespace LAMMPS_NS;
 
@@ -66,11 +69,7 @@ FixWallBounce::FixWallBounce(LAMMPS *instance, int narg, char **arg) : Fix(insta
       inputs[arg[k]] = std::string(arg[k + 1]);
     }
   }
-  try {
-    law_ = std::make_shared<const bounce::models::DemModel>(bounce::api::wall_dem_model(inputs));
-  } catch (const std::exception &e) {
-    error->all(FLERR, "fix wall/bounce {}: {}", arg[6], e.what());
-  }
+  make_laws(inputs, arg[6]);
 
   layout_.add(*law_);
   values_ = 1 + layout_.size();
@@ -91,6 +90,21 @@ FixWallBounce::~FixWallBounce()
   memory->destroy(state_);
 }
 
+// The wall's law, and where it takes the default asperity form, the same with the published form
+// (the one a restart written before passive became the default holds: unpack_restart).
+void FixWallBounce::make_laws(bounce::api::Inputs inputs, const char *model)
+{
+  try {
+    law_ = std::make_shared<const bounce::models::DemModel>(bounce::api::wall_dem_model(inputs));
+    if (bounce::lammps::takes_default_asperity_form(*law_, inputs.count("asperity_form") > 0)) {
+      inputs["asperity_form"] = std::string(bounce::lammps::form_before_passive_default);
+      published_law_ = std::make_shared<const bounce::models::DemModel>(bounce::api::wall_dem_model(inputs));
+    }
+  } catch (const std::exception &e) {
+    error->all(FLERR, "fix wall/bounce {}: {}", model, e.what());
+  }
+}
+
 int FixWallBounce::setmask()
 {
   return FixConst::POST_FORCE;
@@ -105,6 +119,7 @@ void FixWallBounce::init()
   if (!utils::strmatch(update->integrate_style, "^verlet"))
     error->all(FLERR, "fix wall/bounce needs run_style verlet");
   warned_ = false;
+  keep_published_form();
   fix_rigid_ = nullptr;
   for (int k = 0; k < modify->nfix; k++)
     if (modify->fix[k]->rigid_flag) fix_rigid_ = modify->fix[k];
@@ -115,6 +130,23 @@ void FixWallBounce::update_rigid_masses()
 {
   bounce::lammps::rigid_masses(lmp, fix_rigid_, mass_rigid_, nmax_rigid_, "fix wall/bounce",
                                "fix_wall_bounce:mass_rigid");
+}
+
+// Continued from a restart written before passive became the default (on any rank), a law that
+// names no asperity form keeps the published one, whose springs the atoms' records hold.
+void FixWallBounce::keep_published_form()
+{
+  int mine = old_restart_ ? 1 : 0, any = 0;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  if (!any || !published_law_) return;
+  law_ = std::move(published_law_);
+  published_law_.reset();
+  if (comm->me == 0)
+    error->warning(FLERR,
+                   "fix wall/bounce {}: its restart records were written before passive became the default "
+                   "asperity_form: naming no form, it keeps the published form their springs hold (docs/lammps.md, "
+                   "Restarts)",
+                   id);
 }
 
 // m_eff against an immovable wall: the atom's mass, or its rigid body's.
@@ -237,12 +269,15 @@ int FixWallBounce::unpack_exchange(int nlocal, double *buf)
   return size_;
 }
 
-// A restart file's per-atom record: its length, then the two walls' touch flags and histories.
+// A restart file's per-atom record: its length, the two walls' touch flags and histories, then
+// record_mark. Records written before passive became the default asperity form have no mark (and
+// an odd length: size_ is even); a plugin of then reads the new ones, leaving the mark unread.
 int FixWallBounce::pack_restart(int i, double *buf)
 {
-  buf[0] = size_ + 1;
+  buf[0] = size_ + 2;
   for (int m = 0; m < size_; m++) buf[m + 1] = state_[i][m];
-  return size_ + 1;
+  buf[size_ + 1] = record_mark;
+  return size_ + 2;
 }
 
 void FixWallBounce::unpack_restart(int nlocal, int nth)
@@ -250,16 +285,25 @@ void FixWallBounce::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;  // this fix's record among the atom's: skip the ones before it
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  const int length = static_cast<int>(extra[nlocal][m]);
+  if (length == size_ + 1) {
+    old_restart_ = true;  // its springs are the published form's if the law names none (keep_published_form)
+  } else if (length != size_ + 2 || extra[nlocal][m + size_ + 1] != record_mark) {
+    error->one(FLERR,
+               "fix wall/bounce {}: the restart file's record of atom {} ({} values) is not this law's ({}): give "
+               "the fix the model it was written with",
+               id, atom->tag[nlocal], length, size_ + 2);
+  }
   m++;
   for (int k = 0; k < size_; k++) state_[nlocal][k] = extra[nlocal][m++];
 }
 
 int FixWallBounce::size_restart(int)
 {
-  return size_ + 1;
+  return size_ + 2;
 }
 
 int FixWallBounce::maxsize_restart()
 {
-  return size_ + 1;
+  return size_ + 2;
 }

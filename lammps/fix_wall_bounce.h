@@ -18,6 +18,7 @@ FixStyle(wall/bounce,FixWallBounce);
 #include <memory>
 
 #include "fix.h"
+#include "bounce/api/front_door.hpp"
 #include "bounce/dem/contact.hpp"
 
 namespace LAMMPS_NS {
@@ -43,7 +44,9 @@ class FixWallBounce : public Fix {
   int maxsize_restart() override;
 
  private:
-    void report(const bounce::dem::ContactForce &c, const bounce::dem::Kinematics &k, int i, double dt);
+  void make_laws(bounce::api::Inputs inputs, const char *model);
+  void keep_published_form();
+  void report(const bounce::dem::ContactForce &c, const bounce::dem::Kinematics &k, int i, double dt);
   void update_rigid_masses();
   [[noreturn]] void not_finite(int i, const bounce::dem::Kinematics &k, double dt);
   double mass(int i) const;
@@ -55,6 +58,11 @@ class FixWallBounce : public Fix {
   double position_[2];
   bool corrected_ = true;
   std::shared_ptr<const bounce::models::DemModel> law_;
+  // law_ with asperity_form published where the fix names no form: the law of a run continued
+  // from a restart written before passive became the default (old_restart_, on any rank).
+  std::shared_ptr<const bounce::models::DemModel> published_law_;
+  bool old_restart_ = false;
+  static constexpr double record_mark = 2.0;  // ends each atom's restart record since issue 40
   double **state_;  // [atom][wall * values + k]
   bool warned_ = false;  // a contact too coarse for dt was reported in this run
   class Fix *fix_rigid_ = nullptr;  // m_eff is its body's mass (as fix wall/gran)

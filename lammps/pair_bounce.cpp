@@ -155,12 +155,20 @@ void PairBounce::coeff(int narg, char **arg)
                    "material; unlike types mix their materials, or take their own pair_coeff I J)",
                    arg[0], arg[1], key, coeffs[key]);
   }
+  // After a restart written before passive became the default, a law naming no form keeps the
+  // published one, as the file's own pair_coeff's do (pair_bounce_io.cpp).
   std::shared_ptr<const bounce::lammps::TypeLaw> law;
+  bool kept = false;
   try {
-    law = bounce::lammps::make_type_law(coeffs);
+    law = published_restart_ ? bounce::lammps::restart_type_law(coeffs, kept) : bounce::lammps::make_type_law(coeffs);
   } catch (const std::exception &e) {
     error->all(FLERR, "pair_coeff {} {} {}: {}", arg[0], arg[1], arg[2], e.what());
   }
+  if (kept && comm->me == 0)
+    error->warning(FLERR,
+                   "pair_coeff {} {} names no asperity_form: after a restart written before passive became the "
+                   "default, it keeps the published form (docs/lammps.md, Restarts)",
+                   arg[0], arg[1]);
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
     for (int j = std::max(jlo, i); j <= jhi; j++) {

@@ -78,6 +78,9 @@ class PairBounce : public Pair {
   int nmax_rigid_ = 0;
   int freeze_bit_ = 0;              // fix freeze's group: m_eff is the other atom's mass
   bool corrected_ = true;           // pair_style bounce integration corrected | plain
+  // A restart read was written before passive became the asperity law's default (issue 40):
+  // pair_coeff's that name no form keep the published one (type_laws.h, restart_type_law).
+  bool published_restart_ = false;
   bool warned_ = false;             // a contact too coarse for dt was reported in this run
   bounce::dem::Layout layout_;      // per contact in FixNeighHistory: the laws' states (set at the first run)
   int single_neighbor_ = 0;         // single(): where the last search of j in i's list ended

@@ -71,11 +71,20 @@ void PairBounce::read_restart(FILE *fp)
       std::vector<char> text(length);
       if (me == 0) utils::sfread(FLERR, text.data(), 1, length, fp, nullptr, error);
       MPI_Bcast(text.data(), length, MPI_CHAR, 0, world);
+      bool kept = false;
       try {
-        set_law(i, j, bounce::lammps::make_type_law(bounce::lammps::from_text(std::string(text.begin(), text.end()))));
+        set_law(i, j, bounce::lammps::restart_type_law(bounce::lammps::from_text(std::string(text.begin(), text.end())),
+                                                        kept));
       } catch (const std::exception &e) {
         error->all(FLERR, "pair_style bounce: the restart file's pair_coeff {} {}: {}", i, j, e.what());
       }
+      if (kept && comm->me == 0)
+        error->warning(FLERR,
+                       "pair_style bounce: the restart file's pair_coeff {} {} names no asperity_form: written before "
+                       "passive became the default, it keeps the published form its contacts' springs hold "
+                       "(docs/lammps.md, Restarts)",
+                       i, j);
+      published_restart_ = published_restart_ || kept;
     }
   }
 }

@@ -62,12 +62,18 @@ std::string first_difference(const Coeffs& a, const Coeffs& b) {
 
 }  // namespace
 
+bool takes_default_asperity_form(const models::DemModel& law, bool form_named) {
+  return !form_named && law.tangential && law.tangential->law == models::TangentialLaw::asperity;
+}
+
 std::shared_ptr<const TypeLaw> make_type_law(const Coeffs& coeffs) {
   auto entry = std::make_shared<TypeLaw>();
   entry->coeffs = coeffs;
   api::Inputs inputs;
   for (const auto& [key, value] : coeffs) inputs[key] = value;
   entry->law = api::dem_model(inputs);
+  if (takes_default_asperity_form(entry->law, coeffs.count("asperity_form") > 0))
+    entry->coeffs["asperity_form"] = std::string(models::to_string(entry->law.tangential->form));
   const models::ContactGeometry unit{1.0, 1.0};
   entry->beyond = entry->law.release_overlap(unit) < 0.0;
   entry->snaps = entry->law.snap_overlap(unit) < 0.0;
@@ -90,6 +96,16 @@ std::shared_ptr<const TypeLaw> mix(const TypeLaw& ii, const TypeLaw& jj, int i, 
   for (const auto& [one, two] : body_keys)
     if (const auto it = jj.coeffs.find(one); it != jj.coeffs.end()) mixed[two] = it->second;
   return make_type_law(mixed);
+}
+
+std::shared_ptr<const TypeLaw> restart_type_law(const Coeffs& coeffs, bool& kept_published) {
+  kept_published = false;
+  auto law = make_type_law(coeffs);
+  if (coeffs.count("asperity_form") || !law->coeffs.count("asperity_form")) return law;
+  Coeffs before = coeffs;
+  before["asperity_form"] = form_before_passive_default;
+  kept_published = true;
+  return make_type_law(before);
 }
 
 std::string to_text(const Coeffs& coeffs) {

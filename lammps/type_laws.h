@@ -20,14 +20,30 @@ namespace bounce::lammps {
 using Coeffs = std::map<std::string, std::string>;
 
 struct TypeLaw {
+  /// As typed, with the asperity form named where the law takes the default (make_type_law).
   Coeffs coeffs;
   models::DemModel law;
   bool snaps = false;   ///< its contacts form before touching (Maugis-Dugdale's zone)
   bool beyond = false;  ///< its contacts hold beyond touching (an adhesive neck)
 };
 
-/// The law of `coeffs` by bounce's front door (throws its errors, naming the input).
+/// The law of `coeffs` by bounce's front door (throws its errors, naming the input). Where it uses
+/// the asperity law without naming its form, its coefficients name the form it took (so a restart
+/// file always names it: restart_type_law).
 std::shared_ptr<const TypeLaw> make_type_law(const Coeffs& coeffs);
+
+/// True where `law` uses the asperity law and its coefficients do not name the form (the default).
+bool takes_default_asperity_form(const models::DemModel& law, bool form_named);
+
+/// The form a restart written before bounce made passive the default (issue 40) meant where it
+/// named none: BSHP96's published form, whose springs (the extension s) its contacts hold.
+inline constexpr const char* form_before_passive_default = "published";
+
+/// The law of coefficients read from a restart file. Files written since issue 40 name the
+/// asperity form (make_type_law); one that uses the asperity law without naming it was written
+/// before, when the default was the published form: it keeps that form (`asperity_form
+/// published` added, `kept_published` set) rather than read its springs as the passive form's.
+std::shared_ptr<const TypeLaw> restart_type_law(const Coeffs& coeffs, bool& kept_published);
 
 /// Why two types cannot be mixed (the message names the key, the two values and the remedy).
 struct CannotMix : std::runtime_error {

@@ -114,8 +114,9 @@ def bshp96_fig1(quick: bool = False) -> Figure:
 def bshp96_fig2_data(zeta0: float, n: int = 41) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """eps^T on an n x n log grid of g^N, g^T in [1e-3, 10] m/s for asperity size zeta0 R_eff."""
     pair = b.Pair(material=BSHP96_MATERIAL, radius=BSHP96_RADIUS)
+    # The published form, as BSHP96 drew it (the default, passive, keeps |eps^T| <= 1: decisions.md D12).
     model = b.Model("viscoelastic", A=BSHP96_FIG2_DISSIPATIVE_CONSTANT, friction=float(np.sqrt(zeta0)),
-                    asperity=zeta0 * pair.effective_radius)
+                    asperity=zeta0 * pair.effective_radius, asperity_form="published")
     g_normal = np.geomspace(1e-3, 10.0, n)
     g_tangential = np.geomspace(1e-3, 10.0, n)
     cor_t = np.empty((n, n))

@@ -54,9 +54,12 @@ const models::TangentialModel& tabulable(const models::Model& model, double gn_m
     throw InvalidArgument("tangential_law", std::string(models::to_string(tangential.law)),
                           "asperity for an eps^T table (the step law is not tabulated; docs/tables.md)");
   }
+  // The default form is passive (D12): a table of the default is refused with what to type.
   if (tangential.form != models::AsperityForm::published) {
     throw InvalidArgument("asperity_form", std::string(models::to_string(tangential.form)),
-                          "published for an eps^T table (the passive form is not tabulated; docs/tables.md)");
+                          "published for an eps^T table (a table holds BSHP96's published asperity form only; "
+                          "passive, the default, is not tabulated): add --asperity-form published "
+                          "(Python: asperity_form=\"published\"; docs/tables.md, Limits)");
   }
   // The direct integration averages the sawtooth where asperities break more than
   // dense_breaks times per time unit; the table resolves every break, so its range must

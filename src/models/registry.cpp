@@ -150,8 +150,11 @@ std::vector<ParameterSpec> every_model() {
       real_parameter("asperity", "asperity size zeta0", "m", Range{1e-20, std::numeric_limits<double>::infinity(), true},
                      "asperity size zeta0 [m] (BSHP96 (32); asperity law)"),
       choice_parameter("tangential_law", {"asperity", "step"}, "asperity (BSHP96 (35), default) | step (BSHP96 (39))"),
-      choice_parameter("asperity_form", {"published", "passive"},
-             "published (BSHP96 (35), default) | passive (no energy from the changing stiffness)"),
+      // passive by default since issue 40: a DEM or table user takes defaults, and the published
+      // form's spring gains energy from its changing stiffness (|eps^T| up to 1.13, D12).
+      choice_parameter("asperity_form", {"passive", "published"},
+                       "passive (default: no energy from the changing stiffness) | published (BSHP96 (35) as "
+                       "printed, for its figures: eps^T can leave [-1, 1])"),
       real_parameter("shear_damping", "shear damping gamma_s", "1/s", non_negative(),
                      "gamma_s [1/s] (BSHP96 (39); step law)"),
       choice_parameter("method", {"auto", "integrate", "master"}, "auto | integrate | master (default: master where valid)"),

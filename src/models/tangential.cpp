@@ -23,7 +23,7 @@ TangentialLaw parse_tangential_law(std::string_view text) {
 AsperityForm parse_asperity_form(std::string_view text) {
   if (text == "published") return AsperityForm::published;
   if (text == "passive") return AsperityForm::passive;
-  throw InvalidArgument("asperity_form", std::string(text), "published or passive");
+  throw InvalidArgument("asperity_form", std::string(text), "passive (default) or published (BSHP96 (35))");
 }
 
 void validate(const TangentialModel& m) {

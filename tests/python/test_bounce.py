@@ -49,10 +49,11 @@ def test_collide_equals_cli(pair_args, model_args, velocity, cli_args):
 
 def test_oblique_equals_cli():
     pair = bounce.Pair(material="ice-bshp96", radius=0.01)
-    model = bounce.Model("viscoelastic", A=1e-6, friction=0.014142, asperity=1e-6)
-    r = bounce.collide(pair, model, 1.0, tangential_velocity=0.01)
+    model = bounce.Model("viscoelastic", A=1e-6, friction=0.014142, asperity=1e-6, asperity_form="published")
+    with pytest.warns(bounce.ValidityWarning, match="published asperity law"):
+        r = bounce.collide(pair, model, 1.0, tangential_velocity=0.01)
     c = cli("collide", "--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6", "--friction", "0.014142",
-            "--asperity", "1e-6", "--velocity", "1", "--tangential-velocity", "0.01")
+            "--asperity", "1e-6", "--asperity-form", "published", "--velocity", "1", "--tangential-velocity", "0.01")
     assert r["cor_tangential"] == c["cor_tangential"]
     assert r["cor_tangential"] == pytest.approx(-1.1331, abs=1e-4)  # docs/decisions.md D12's check
 
@@ -94,7 +95,7 @@ def test_table_against_direct_and_cli():
 
 def test_tangential_table_against_direct_and_cli():
     pair = bounce.Pair(material="ice-bshp96", radius=0.01)
-    model = bounce.Model(A=1e-6, friction=0.014142, asperity=1e-6)
+    model = bounce.Model(A=1e-6, friction=0.014142, asperity=1e-6, asperity_form="published")  # tabulated form
     table = bounce.TangentialTable.build(pair, model, 0.1, 3.0, 1e-3, 0.5)
     rng = np.random.default_rng(5)
     gn = 0.1 * 30.0 ** rng.random(30)
@@ -106,7 +107,8 @@ def test_tangential_table_against_direct_and_cli():
     again = bounce.TangentialTable.from_json(table.to_json())
     assert np.array_equal(again.cor(gn, gt), table.cor(gn, gt))
     c = cli("table", "--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6", "--friction", "0.014142",
-            "--asperity", "1e-6", "--velocities", "0.1:3", "--tangential-velocities", "0.001:0.5")
+            "--asperity", "1e-6", "--asperity-form", "published", "--velocities", "0.1:3",
+            "--tangential-velocities", "0.001:0.5")
     assert c["nodes"] == json.loads(table.to_json())["nodes"]
     with pytest.raises(ValueError, match="tangential_velocity"):
         table.cor(1.0, 2.0)

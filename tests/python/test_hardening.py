@@ -288,7 +288,7 @@ def test_table_bound_and_range_messages_read_well():
     assert refused(ValueError, "g_max", lambda: bounce.NormalTable.build(ice(), krijt(), 20.0, 0.5)) == \
         "g_max = 0.5 is invalid: expected g_max > g_min = 20 m/s"
     rough = bounce.Pair(material="ice-bshp96", radius=0.01)
-    asperity = bounce.Model("viscoelastic", A=1e-6, friction=0.014142, asperity=1e-6)
+    asperity = bounce.Model("viscoelastic", A=1e-6, friction=0.014142, asperity=1e-6, asperity_form="published")
     refused(ValueError, "bound", lambda: bounce.TangentialTable.build(rough, asperity, 0.01, 10.0, 1e-3, 1.0, bound=0))
     refused(ValueError, "gt_max", lambda: bounce.TangentialTable.build(rough, asperity, 0.01, 10.0, 1.0, 1e-3))
     text = refused(ValueError, "friction", lambda: bounce.NormalTable.build(rough, asperity, 0.5, 20.0))

@@ -12,11 +12,11 @@ enum class AsperityForm { published, passive };
 std::string_view to_string(TangentialLaw law);
 std::string_view to_string(AsperityForm form);
 TangentialLaw parse_tangential_law(std::string_view text);  ///< "asperity" | "step"
-AsperityForm parse_asperity_form(std::string_view text);    ///< "published" | "passive"
+AsperityForm parse_asperity_form(std::string_view text);    ///< "passive" | "published"
 
 struct TangentialModel {
   TangentialLaw law = TangentialLaw::asperity;
-  AsperityForm form = AsperityForm::published;
+  AsperityForm form = AsperityForm::passive;  ///< passive by default: the published form can gain energy (D12)
   double friction = 0.0;       ///< mu, BSHP96 (35)-(36)
   double asperity_size = 0.0;  ///< zeta0 [m], BSHP96 (32) (asperity law)
   double shear_damping = 0.0;  ///< gamma_s [1/s], BSHP96 (39) (step law)

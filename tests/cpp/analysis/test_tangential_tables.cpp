@@ -30,9 +30,11 @@ namespace {
 
 Pair bshp96() { return Pair::identical(MaterialTable::builtin().at("ice-bshp96"), 0.01); }
 
-// BSHP96 §III: A = 1 us, mu = sqrt(zeta0 / R_eff) (alpha = 1).
+// BSHP96 §III: A = 1 us, mu = sqrt(zeta0 / R_eff) (alpha = 1), the published form (the tabulated one).
 ParameterInputs asperity_inputs(double zeta0_over_r, const std::string& model = "viscoelastic") {
-  ParameterInputs in{{"asperity", zeta0_over_r * bshp96().effective_radius()}, {"friction", std::sqrt(zeta0_over_r)}};
+  ParameterInputs in{{"asperity", zeta0_over_r * bshp96().effective_radius()},
+                     {"friction", std::sqrt(zeta0_over_r)},
+                     {"asperity_form", "published"}};
   if (model != "hertz") in["A"] = 1e-6;
   return in;
 }
@@ -163,6 +165,19 @@ TEST(TangentialTables, BadInput) {
   auto passive = asperity_inputs(2e-4);
   passive["asperity_form"] = "passive";
   EXPECT_THROW(build(bounce::testing::model(bshp96(), "viscoelastic", passive)), InvalidArgument);
+  // The default form (passive since issue 40): the refusal says what to type.
+  auto by_default = asperity_inputs(2e-4);
+  by_default.erase("asperity_form");
+  try {
+    build(bounce::testing::model(bshp96(), "viscoelastic", by_default));
+    ADD_FAILURE() << "a table of the default asperity form was built";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "asperity_form");
+    EXPECT_EQ(e.value(), "passive");
+    EXPECT_NE(e.allowed().find("passive, the default, is not tabulated): add --asperity-form published"),
+              std::string::npos)
+        << e.allowed();
+  }
   Material sticky = MaterialTable::builtin().at("ice-bshp96");
   sticky.surface_energy = 0.1;
   const Pair sticky_pair = Pair::identical(sticky, 0.01);
@@ -191,7 +206,7 @@ TEST(TangentialTables, BadInput) {
 TEST(TangentialTables, Cli) {
   using bounce::testing::run_cli;
   const std::vector<std::string> pair = {"--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6",
-                                         "--friction", "0.014142", "--asperity", "1e-6"};
+                                         "--friction", "0.014142", "--asperity", "1e-6", "--asperity-form", "published"};
   auto with = [&pair](std::vector<std::string> args) {
     args.insert(args.begin() + 1, pair.begin(), pair.end());
     return args;
@@ -216,6 +231,10 @@ TEST(TangentialTables, Cli) {
                    "--velocities", "0.5:2", "--tangential-velocities", "0.001:0.1", "--tangential-law", "step",
                    "--shear-damping", "10", "--csv"},
                   "--tangential-law", "step");
+  // The default asperity form, passive, is not tabulated: exit 2 naming --asperity-form.
+  expect_rejected({"table", "--material", "ice-bshp96", "--radius", "0.01", "--A", "1e-6", "--friction", "0.014142",
+                   "--asperity", "1e-6", "--velocities", "0.5:2", "--tangential-velocities", "0.001:0.1", "--csv"},
+                  "--asperity-form", "passive");
   expect_rejected({"table", "--load", path.string(), "--velocity", "1"}, "--tangential-velocity", "(not given)");
   expect_rejected({"table", "--load", path.string(), "--velocity", "1", "--tangential-velocity", "5"},
                   "--tangential-velocity", "5");

@@ -111,6 +111,7 @@ TEST(DemLaw, FastJkrBranchAgreesWithTheBracketingSolver) {
 // restarts at each break; the passive form keeps the stored energy when k changes.
 TEST(DemLaw, AsperityLawOverSteps) {
   models::TangentialModel t;
+  t.form = models::AsperityForm::published;
   t.friction = 0.3;
   t.asperity_size = 1e-6;
   double h[3] = {0.0, 0.0, 0.0}, f[3];

@@ -85,12 +85,13 @@ const std::vector<TangentialCase>& tangential_tables() {
     };
     const Pair ice = material_pair("ice-bshp96", 0.01, "ice-bshp96", 0.01);
     const double r = ice.effective_radius();
-    add(ice, {"viscoelastic", {{"A", 1e-6}, {"asperity", 2e-4 * r}, {"friction", std::sqrt(2e-4)}}}, 0.01, 10.0,
-        1e-3, 1.0);
-    add(ice, {"viscoelastic-shifted", {{"A", 1e-6}, {"asperity", 1e-3 * r}, {"friction", std::sqrt(1e-3)}}}, 0.01,
+    const ParameterInputs::value_type published{"asperity_form", "published"};  // the tabulated form
+    add(ice, {"viscoelastic", {{"A", 1e-6}, {"asperity", 2e-4 * r}, {"friction", std::sqrt(2e-4)}, published}}, 0.01,
         10.0, 1e-3, 1.0);
+    add(ice, {"viscoelastic-shifted", {{"A", 1e-6}, {"asperity", 1e-3 * r}, {"friction", std::sqrt(1e-3)}, published}},
+        0.01, 10.0, 1e-3, 1.0);
     const Pair steel_glass = material_pair("steel", 1e-3, "ag-coated-glass", 3e-3);
-    add(steel_glass, {"hertz", {{"asperity", 1e-7}, {"friction", 0.3}}}, 0.01, 1.0, 1e-3, 0.3);
+    add(steel_glass, {"hertz", {{"asperity", 1e-7}, {"friction", 0.3}, published}}, 0.01, 1.0, 1e-3, 0.3);
     return out;
   }();
   return tables;
