@@ -79,7 +79,8 @@ expect_refusal() {  # expect_refusal TEXT COMMAND...: exit 2 with TEXT on stderr
 }
 expect_refusal "no such file" "$cli" atlas query "$work/missing.h5" --radius 1e-6 --velocity 1
 step "atlas module: $(ls "$prefix"/lib/*/bounce/atlas_hdf5.so "$prefix"/lib/bounce/atlas_hdf5.so 2>/dev/null | head -1)"
-if command -v mpirun > /dev/null; then
+modules=$(dirname "$(ls "$prefix"/lib/*/bounce/atlas_hdf5.so "$prefix"/lib/bounce/atlas_hdf5.so 2>/dev/null | head -1)")
+if command -v mpirun > /dev/null && [ -e "$modules/mpi.so" ]; then
   expect_refusal "readable TOML manifest" env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
     mpirun --oversubscribe -np 2 "$cli" fit --batch "$work/missing.toml"
   step "mpi module: mpirun -np 2 bounce fit --batch"

@@ -2,7 +2,8 @@
  * `bounce atlas build`, look up eps, the outcome and v_stick of a pair of radii at an impact
  * speed, and read the raw grids (for codes that copy them to a GPU).
  *
- * Plain C (C99 and C++); link with -lbounce. Every length in m, speed in m/s. R2 = INFINITY
+ * Plain C (C99 and C++); link with -lbounce (a shared libbounce opens its HDF5 module from the
+ * folder bounce/ beside it: copy both). Every length in m, speed in m/s. R2 = INFINITY
  * is a wall of the atlas's second material. A query outside the atlas's ranges returns NaN
  * (or -1 for bounce_atlas_sticks): never an extrapolated value. The lookups are read-only and
  * may run on many threads at once. */

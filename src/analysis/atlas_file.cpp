@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "bounce/analysis/atlas.hpp"
+#include "bounce/core/error.hpp"
 #include "bounce/core/module.hpp"
 #include "hdf5/atlas_file_module.hpp"
 
@@ -15,8 +16,14 @@ namespace {
 const detail::AtlasFileModule& file_module() {
 #ifdef BOUNCE_ATLAS_MODULE
   using Entry = const detail::AtlasFileModule* (*)();
-  static const detail::AtlasFileModule* module =
-      reinterpret_cast<Entry>(module_symbol("atlas_hdf5.so", "bounce_atlas_file_module"))();
+  static const detail::AtlasFileModule* module = [] {
+    const auto* m = reinterpret_cast<Entry>(module_symbol("atlas_hdf5.so", "bounce_atlas_file_module"))();
+    if (m->atlas_size != sizeof(Atlas)) {
+      throw InstallationError("bounce's module " + module_folder() + "/atlas_hdf5.so is from another build of bounce "
+                              "(its atlas differs from this library's); reinstall bounce, or rebuild it");
+    }
+    return m;
+  }();
 #else
   static const detail::AtlasFileModule* module = bounce_atlas_file_module();
 #endif

@@ -231,7 +231,7 @@ void add_plastic_losses(CollisionOutcome& out, const Pair& pair, double velocity
 // losses) cannot return more energy than the impact brought: 0 <= e^N <= 1. An integrated e^N
 // above 1 by less than the integration's own error is that error and is rounded to 1 (what
 // it made up moves to the closure error); beyond it the result is refused, never printed.
-void bound_passive_cor(CollisionOutcome& out, double tolerance) {
+void bound_passive_cor(CollisionOutcome& out, double tolerance, bool force_law) {
   // Dissipated work is >= 0 too: a tally below 0 by rounding (hertz: -3e-52 J of 1e-49 J)
   // is 0, what it held moves to the closure error.
   dynamics::EnergyBudget& e = out.energy;
@@ -243,16 +243,16 @@ void bound_passive_cor(CollisionOutcome& out, double tolerance) {
     }
   }
   if (rounded) e.close();
-  // An overdamped contact creeps apart with a rebound speed near 0, which the event location
-  // can place a hair below it (e = -8e-15, viscoelastic, A = 1e3 t_H): within the tolerance, 0.
-  if (out.cor < 0.0 && -out.cor <= 1e3 * tolerance) {
+  // A force law's contact ends with the grains parting: e < 0 is the event location's error where
+  // an overdamped contact creeps apart (-8e-15, viscoelastic, A = 1e3 t_H). Within tolerance, 0.
+  if (force_law && out.cor < 0.0) {
+    if (-out.cor > 1e3 * tolerance) {
+      throw NumericalError(fmt::format("e^N = {} < 0: the grains did not part, beyond the integration's tolerance {} "
+                                       "(tighten --tolerance)", out.cor, tolerance));
+    }
     out.cor = 0.0;
     out.energy.final_kinetic = 0.0;
     out.energy.close();
-  }
-  if (out.cor < 0.0) {
-    throw NumericalError(fmt::format("e^N = {} < 0: the grains did not part, beyond the integration's tolerance {} "
-                                     "(tighten --tolerance)", out.cor, tolerance));
   }
   if (out.cor <= 1.0) return;
   // 1e3 x the relative tolerance: hertz integrated at 1e-12 overshoots by 2e-11 (event
@@ -364,6 +364,7 @@ ViscoelasticScales viscoelastic_scales(const Pair& pair, const models::Model& mo
 
 CollisionOutcome collide(const Pair& pair, const models::Model& model, double velocity, const CollideOptions& options) {
   require_impact_velocity(pair, velocity);
+  if (const auto* law = model.force_law()) law->check_speed(velocity);  // every path, oblique ones too
   if (model.hertz) damping_kappa(pair, model, velocity);
   if (options.tangential_velocity > 0.0 && !model.tangential) {
     throw InvalidArgument("friction", "(not given)", "a friction coefficient mu >= 0 (BSHP96 (36))");
@@ -371,7 +372,7 @@ CollisionOutcome collide(const Pair& pair, const models::Model& model, double ve
   const bool force_law = model.force_law() != nullptr;
   CollisionOutcome out = force_law ? force_law_collision(pair, model, velocity, options)
                                    : contact_collision(pair, model, velocity, options);
-  bound_passive_cor(out, force_law ? options.integration.relative_tolerance : options.adhesive_tolerance);
+  bound_passive_cor(out, force_law ? options.integration.relative_tolerance : options.adhesive_tolerance, force_law);
   bound_trajectory(out);
   if (model.traits.adhesion == models::Adhesion::weak) detail::add_neck_work(out, pair);  // BP04 §8.3.4
   if (model.yield_strength) add_plastic_losses(out, pair, velocity, *model.yield_strength);

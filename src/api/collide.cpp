@@ -107,10 +107,13 @@ Sweep sweep_of(const Parameters& own) {
 // Every point's pair and speed checked before the first collision: a stream cannot take back
 // the rows it wrote, so a bad point is refused (exit 2) before any (a speed of the sweep named
 // as the option the user typed).
+// A force law that cannot be integrated at a speed names its own parameter (power-law's damping).
 void check_sweep(const detail::Bound& bound, const Sweep& s, const Case& first) {
   for (std::size_t i = 0; i < s.values.size(); ++i) {
     if (s.by_radius) {
-      analysis::require_impact_velocity(detail::make_case(bound, s.values[i]).pair, s.velocity);
+      const Case c = detail::make_case(bound, s.values[i]);
+      analysis::require_impact_velocity(c.pair, s.velocity);
+      if (const auto* law = c.model.force_law()) law->check_speed(s.velocity);
       continue;
     }
     try {
@@ -119,6 +122,7 @@ void check_sweep(const detail::Bound& bound, const Sweep& s, const Case& first) 
       throw InvalidArgument("velocities", bound.own.text("velocities"),
                             fmt::format("speeds that are all valid: {} fails, expected {}", e.value(), e.allowed()));
     }
+    if (const auto* law = first.model.force_law()) law->check_speed(s.values[i]);
   }
 }
 

@@ -11,15 +11,28 @@
 namespace bounce {
 
 namespace {
+
 const int anchor = 0;  // an address inside libbounce
+
+// libbounce's folder as the loader found it, made absolute when the library is loaded: a relative
+// LD_LIBRARY_PATH entry names it from the working directory of that moment, which may change.
+std::string loaded_from() {
+  Dl_info info{};
+  if (dladdr(&anchor, &info) == 0 || info.dli_fname == nullptr) return {};
+  std::error_code error;
+  const std::filesystem::path path = std::filesystem::absolute(info.dli_fname, error);
+  return error ? std::string() : path.parent_path().string();
+}
+
+const std::string library_folder = loaded_from();
+
 }  // namespace
 
 std::string module_folder() {
-  Dl_info info{};
-  if (dladdr(&anchor, &info) == 0 || info.dli_fname == nullptr) {
+  if (library_folder.empty()) {
     throw InstallationError("bounce could not find where its library is loaded from (dladdr), so not its modules either");
   }
-  return (std::filesystem::path(info.dli_fname).parent_path() / "bounce").string();
+  return library_folder + "/bounce";
 }
 
 void* module_symbol(const std::string& file, const char* symbol) {

@@ -37,11 +37,12 @@ def module_folder():
 def test_the_cli_starts_without_hdf5_and_mpi():
     """main's CLI mapped 52 libraries, libhdf5's and Open MPI's among them: 13 ms to start."""
     folder = module_folder()
-    assert sorted(os.listdir(folder)) == ["atlas_hdf5.so", "mpi.so"]
+    modules = sorted(os.listdir(folder))
+    assert modules in (["atlas_hdf5.so", "mpi.so"], ["atlas_hdf5.so"]), modules  # mpi.so where MPI was found
     heavy = [name for name in libraries(CLI) if HEAVY.search(name)]
     assert heavy == [], heavy
-    assert any(HEAVY.search(name) for name in libraries(os.path.join(folder, "atlas_hdf5.so")))
-    assert any(HEAVY.search(name) for name in libraries(os.path.join(folder, "mpi.so")))
+    for module in modules:
+        assert any(HEAVY.search(name) for name in libraries(os.path.join(folder, module))), module
 
 
 def test_python_loads_hdf5_on_the_first_atlas_only():
@@ -70,10 +71,11 @@ def test_a_missing_module_is_an_installation_error_naming_it(tmp_path):
     assert done.stderr.startswith(f"bounce: installation error: bounce could not load its module {tmp_path}/bounce/"
                                   "atlas_hdf5.so"), done.stderr
     assert folder not in done.stderr
-    done = subprocess.run([CLI, "fit", "--batch", str(tmp_path / "none.toml")], capture_output=True, text=True,
-                          env=dict(env, OMPI_COMM_WORLD_SIZE="1"))
-    assert done.returncode == 3
-    assert f"{tmp_path}/bounce/mpi.so" in done.stderr, done.stderr
+    if os.path.exists(os.path.join(folder, "mpi.so")):  # a CLI built with MPI opens it under a launcher
+        done = subprocess.run([CLI, "fit", "--batch", str(tmp_path / "none.toml")], capture_output=True, text=True,
+                              env=dict(env, OMPI_COMM_WORLD_SIZE="1"))
+        assert done.returncode == 3
+        assert f"{tmp_path}/bounce/mpi.so" in done.stderr, done.stderr
     # The same CLI with its modules reads on: exit 2 for the missing atlas, naming it.
     done = subprocess.run([CLI, "atlas", "query", str(tmp_path / "a.h5"), "--radius", "1e-6", "--velocity", "1"],
                           capture_output=True, text=True)

@@ -4,6 +4,7 @@
 // libraries it brings (curl, GnuTLS, Kerberos, ...) cost every other program 4 ms at start-up
 // (docs/benchmarks.md). In a static libbounce (the pip wheel) it is linked in.
 
+#include <cstddef>
 #include <string>
 
 #include "bounce/analysis/atlas.hpp"
@@ -11,6 +12,7 @@
 namespace bounce::analysis::detail {
 
 struct AtlasFileModule {
+  std::size_t atlas_size;  ///< sizeof(Atlas) where the module was built: another build's is refused
   void (*write)(const Atlas& atlas, const std::string& path);
   Atlas (*read)(const std::string& path, const std::string& expected_model);
 };

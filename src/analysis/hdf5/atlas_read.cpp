@@ -15,7 +15,7 @@
 
 namespace bounce::analysis {
 
-std::uint32_t atlas_digest(const Atlas& atlas);  // atlas_hdf5.cpp
+std::uint32_t atlas_digest(const Atlas& atlas);  // atlas_write.cpp
 
 namespace {
 

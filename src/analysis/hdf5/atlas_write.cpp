@@ -211,7 +211,8 @@ std::uint32_t atlas_digest(const Atlas& atlas) { return digest(atlas); }
 }  // namespace bounce::analysis
 
 const bounce::analysis::detail::AtlasFileModule* bounce_atlas_file_module() {
-  static const bounce::analysis::detail::AtlasFileModule module{bounce::analysis::detail::write_atlas_hdf5,
+  static const bounce::analysis::detail::AtlasFileModule module{sizeof(bounce::analysis::Atlas),
+                                                                 bounce::analysis::detail::write_atlas_hdf5,
                                                                  bounce::analysis::detail::read_atlas_hdf5};
   return &module;
 }

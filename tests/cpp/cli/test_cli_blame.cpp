@@ -182,6 +182,18 @@ TEST(Blame, OverdampedPowerLawNamesItsDamping) {
     EXPECT_TRUE(has(err, std::string("where it is ") + kappa)) << err;
     EXPECT_TRUE(has(err, "kappa = D2 xi0^(1+gamma) g^(beta-2) (BP04 (8.68)) <= 100")) << err;
   }
+  // A curve is refused before its first row (kappa ~ g^0.2: 91 at 1 m/s, 105 at 2 m/s), and an
+  // oblique collision is checked as a head-on one.
+  std::vector<std::string> curve{"curve", "--material", "water-ice", "--radius", "1e-6", "--model", "power-law",
+                                 "--power-d1", "1e10", "--power-d2", "8e7", "--velocities", "0.5:2:3", "--csv"};
+  const auto refused = run_cli(curve);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_EQ(refused.out, "");
+  EXPECT_TRUE(has(refused.err, "--power-d2 = 8e7 is invalid")) << refused.err;
+  std::vector<std::string> oblique = base;
+  oblique.insert(oblique.end(), {"--power-d1", "1e10", "--power-d2", "1e10", "--tangential-velocity", "0.1",
+                                 "--friction", "0.3", "--asperity", "1e-9"});
+  expect_rejected(oblique, "--power-d2", "1e10");
   // Below the bound it is integrated: kappa = 91, e ~ 1.6e-9.
   std::vector<std::string> args = base;
   args.insert(args.end(), {"--power-d1", "1e10", "--power-d2", "8e7", "--json"});
