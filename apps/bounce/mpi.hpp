@@ -25,8 +25,7 @@ inline bool launched_by_mpi() {
 
 inline const MpiCalls& mpi_calls() {
 #ifdef BOUNCE_MPI_MODULE
-  using Entry = const MpiCalls* (*)();
-  static const MpiCalls* calls = reinterpret_cast<Entry>(module_symbol("mpi.so", "bounce_mpi_calls"))();
+  static const MpiCalls* calls = module_table<MpiCalls>("mpi.so", "bounce_mpi_calls");
 #else
   static const MpiCalls* calls = bounce_mpi_calls();
 #endif

@@ -15,9 +15,8 @@ namespace {
 
 const detail::AtlasFileModule& file_module() {
 #ifdef BOUNCE_ATLAS_MODULE
-  using Entry = const detail::AtlasFileModule* (*)();
   static const detail::AtlasFileModule* module = [] {
-    const auto* m = reinterpret_cast<Entry>(module_symbol("atlas_hdf5.so", "bounce_atlas_file_module"))();
+    const auto* m = module_table<detail::AtlasFileModule>("atlas_hdf5.so", "bounce_atlas_file_module");
     if (m->atlas_size != sizeof(Atlas)) {
       throw InstallationError("bounce's module " + module_folder() + "/atlas_hdf5.so is from another build of bounce "
                               "(its atlas differs from this library's); reinstall bounce, or rebuild it");

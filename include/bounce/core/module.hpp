@@ -15,4 +15,11 @@ std::string module_folder();
 /// kept open. An InstallationError naming the file and the loader's reason when either is missing.
 void* module_symbol(const std::string& file, const char* symbol);
 
+/// A module's table of entry points: `symbol` names a function `const Table* symbol()` of it.
+template <class Table>
+const Table* module_table(const std::string& file, const char* symbol) {
+  using Entry = const Table* (*)();
+  return reinterpret_cast<Entry>(module_symbol(file, symbol))();
+}
+
 }  // namespace bounce
