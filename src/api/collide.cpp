@@ -106,8 +106,7 @@ Sweep sweep_of(const Parameters& own) {
 
 // Every point's pair and speed checked before the first collision: a stream cannot take back
 // the rows it wrote, so a bad point is refused (exit 2) before any (a speed of the sweep named
-// as the option the user typed).
-// A force law that cannot be integrated at a speed names its own parameter (power-law's damping).
+// as the option the user typed; a force law that cannot be integrated at it, its own parameter).
 void check_sweep(const detail::Bound& bound, const Sweep& s, const Case& first) {
   for (std::size_t i = 0; i < s.values.size(); ++i) {
     if (s.by_radius) {
