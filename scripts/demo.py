@@ -113,6 +113,12 @@ K13_RADIUS = "2.0353e-6"
 K13_Z0 = "0.088e-9"
 
 
+def number(value, spec: str, none: str) -> str:
+    """A record's number as the table prints it; `none` where the record holds null (a sticking
+    collision has no contact time; a closed form beyond its validity is null)."""
+    return none if value is None else format(value, spec)
+
+
 def adhesive_section(runner: Runner, out: pathlib.Path) -> list[str]:
     runner.progress("adhesive collisions: K13 section 3")
     k13 = out / "k13"
@@ -124,9 +130,11 @@ def adhesive_section(runner: Runner, out: pathlib.Path) -> list[str]:
         for v in ("8", "2"):
             r = runner.json("collide", *K13, "--radius", K13_RADIUS, "--z0", z0, "--velocity", v)
             e = r["energy"]
-            lines.append(f"| {float(z0) * 1e9:g} | {v} | {r['outcome']} | {r['cor']:.3f} | {r['contact_time']:.3g} | "
+            lines.append(f"| {float(z0) * 1e9:g} | {v} | {r['outcome']} | {r['cor']:.3f} | "
+                         f"{number(r['contact_time'], '.3g', 'none (sticks)')} | "
                          f"{e['crack_dissipated'] / e['initial_kinetic']:.0%} | "
-                         f"{e['bulk_dissipated'] / e['initial_kinetic']:.0%} | {r['closed_forms']['e_i']:.3f} |")
+                         f"{e['bulk_dissipated'] / e['initial_kinetic']:.0%} | "
+                         f"{number(r['closed_forms']['e_i'], '.3f', 'null (beyond its validity)')} |")
     lines += ["", "K13 reports e_A = 0.66, t_c = 1.7e-8 s, 37 % crack and 19 % bulk loss at 8 m/s, and "
               "sticking at 2 m/s (docs/adhesive.md compares and explains).", ""]
     stick = {m: runner.json("sticking", "--material", "water-ice", "--model", m, "--tvis", "1e-11",
