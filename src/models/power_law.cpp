@@ -45,10 +45,8 @@ class PowerLawForce final : public NormalForceModel {
   double reference_overlap(double speed) const override {  // BP04 (8.65)
     return power_law_reference_overlap(p_.d1, p_.alpha, speed);
   }
-  // BP04 (8.68)'s scaled damping kappa = D2 xi0^(1+gamma) g^(beta-2) (its (8.67) prints the two
-  // exponents the other way round). Far above 1 the contact is overdamped and creeps apart slowly:
-  // measured (1 um ice, 1 m/s), the default exponents integrate to kappa = 91 (e = 1.6e-9) and run
-  // out of the 2e6 steps at 1.1e4; gamma = 0 with alpha = 1.5 already at 98 (left to exit 3).
+  // BP04 (8.68): kappa = D2 xi0^(1+gamma) g^(beta-2) (its (8.67) swaps the two exponents). Far above
+  // 1 the contact creeps apart beyond the step budget (docs/hardening.md, round 3, gives the bound's measurements).
   void check_speed(double speed) const override {
     const double xi0 = reference_overlap(speed);
     const double kappa = p_.d2 * std::pow(xi0, 1.0 + p_.gamma) * std::pow(speed, p_.beta - 2.0);
