@@ -33,10 +33,27 @@ struct Resistance {
   Mode rolling, sliding, twisting;
 };
 
+/// What the resistance takes of a pair of materials, whatever the radii (a DEM computes it once per
+/// pair of materials, then each contact's Resistance from its R_eff).
+struct Materials {
+  double effective_modulus = 0.0;   ///< E* [Pa]
+  double surface_energy = 0.0;      ///< gamma, the work of adhesion [J/m^2]
+  double tangential_modulus = 0.0;  ///< Mindlin's G*: 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2 [Pa]
+  double series_shear = 0.0;        ///< 2 G1 G2 / (G1 + G2), the twisting spring's [Pa]
+  double weaker_shear = 0.0;        ///< min(G1, G2), the sliding and twisting limits' [Pa]
+};
+
+/// The pair's Materials; InvalidArgument naming "gamma" where a material has no work of adhesion.
+Materials materials_of(const Pair& pair);
+
 /// The contact of `pair` (spheres or a sphere on a wall; both materials with a work of adhesion)
 /// with critical rolling displacement `xi_crit` [m], 0 < xi_crit < a0. Throws InvalidArgument
 /// naming "xi_crit" or "gamma" otherwise.
 Resistance contact_resistance(const Pair& pair, double xi_crit);
+
+/// The same for a contact of effective radius R [m] (R1 against a wall) between `materials`,
+/// unchecked: the DEM step's (its caller checks xi_crit < a0 where the contact forms).
+Resistance contact_resistance(const Materials& materials, double effective_radius, double xi_crit);
 
 /// E_break / (F_c delta_c) = 1.5426…: the work from equilibrium (a = a0) to the fold
 /// (a = a0/6^{2/3}, delta = -delta_c) on W07's JKR curve, in closed form.
