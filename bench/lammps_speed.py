@@ -11,9 +11,11 @@
    of micrometre water-ice grains whose contacts stick and persist, and on a gas of colliding
    ones whose contacts form and break (the Pair section per step and contact); both again with
    the crack constant k = 0.1 and 0.5 instead of K13's 0.02;
-3. strong scaling: 103 823 grains on 1 and 2 ranks (loop time).
+3. strong scaling: 103 823 grains on 1 and 2 ranks (loop time);
+4. W07's rolling, sliding and twisting springs (docs/resistance.md) on a dense gas of adhesive
+   grains, against the same law without them (the Pair section per step and contact).
 
-    /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR [bed|scaling]]  (after make lammps; bed: 1. only, scaling: the strong scaling only)
+    /usr/bin/python3 bench/lammps_speed.py [BUILD_DIR [bed|scaling|resistance]]  (after make lammps; one part alone)
     /usr/bin/python3 bench/lammps_speed.py BUILD_DIR against OLD/bounceplugin.so   (this plugin beside another)
 """
 import os
@@ -286,13 +288,43 @@ def against(other, reps=7):
               f"plugin's), runs {min(times) * 1e9:.1f}-{max(times) * 1e9:.1f}")
 
 
+def resistance_cost():
+    """The issue's bound: the three springs cost at most 2x the same adhesive law without them, per
+    step and contact (LAMMPS's Pair section), on a dense gas (volume fraction 0.45, 27 000 grains,
+    2000 steps) of W07's 0.1 um ice grains (gamma_s = 0.1 J/m^2, jkr-viscoelastic) at 1 m/s, with a
+    step of 1e-11 s (a hundredth of the contact's period, as W07 step; a grain moves 1e-11 m a step,
+    far below xi_crit); the fastest of five interleaved runs."""
+    law = "jkr-viscoelastic E 7e9 nu 0.25 surface_energy 0.1 A 1e-12"
+    styles = [("jkr-viscoelastic", law), ("jkr-viscoelastic + rolling, sliding, twisting",
+                                           law + " rolling yes sliding yes twisting yes")]
+    extra = "compute touch all contact/atom\ncompute total all reduce sum c_touch\nthermo_style custom step c_ke c_total"
+    cells, steps, best = 30, 2000, {}
+    for _ in range(5):
+        for label, coeff in styles:
+            script = L.gas_script(coeff, cells=cells, radius=1e-7, density=1000.0, phi=0.45, speed=1.0, dt=1e-11,
+                                  steps=steps, thermo=steps // 5, extra=extra, skin=1e-8)
+            out = L.run_lammps(script)[1]
+            pair = section(out, "Pair")
+            if label not in best or pair < best[label][0]:
+                best[label] = (pair, loop_time(out), contacts(out))
+    print(f"{cells ** 3} adhesive ice grains of 0.1 um at volume fraction 0.45, {steps} steps; LAMMPS's Pair time "
+          "per step and contact:")
+    base = None
+    for label, _ in styles:
+        pair, loop, c = best[label]
+        per = pair / steps / c
+        base = base or (per, loop)
+        print(f"  {label:48s} {per * 1e9:6.1f} ns/contact ({2 * c / cells ** 3:.2f} contacts/grain): "
+              f"x{per / base[0]:.2f}; whole loop {loop:.2f} s (x{loop / base[1]:.2f})")
+
+
 if __name__ == "__main__":
     start = time.time()
     if len(sys.argv) > 3 and sys.argv[2] == "against":  # this build's plugin beside another
         against(os.path.abspath(sys.argv[3]))
         sys.exit(0)
-    if len(sys.argv) > 2 and sys.argv[2] in ("bed", "scaling"):  # one part alone
-        {"bed": bed_per_contact, "scaling": scaling}[sys.argv[2]]()
+    if len(sys.argv) > 2 and sys.argv[2] in ("bed", "scaling", "resistance"):  # one part alone
+        {"bed": bed_per_contact, "scaling": scaling, "resistance": resistance_cost}[sys.argv[2]]()
         print(f"({time.time() - start:.0f} s)")
         sys.exit(0)
     bed_per_contact()
@@ -300,5 +332,6 @@ if __name__ == "__main__":
     krijt_cost()
     krijt_gas_cost()
     krijt_other_k_cost()
+    resistance_cost()
     scaling()
     print(f"({time.time() - start:.0f} s)")

@@ -50,8 +50,9 @@ PairBounce::PairBounce(LAMMPS *instance) : Pair(instance), fix_history_(nullptr)
   single_extra = 4;
   svector = new double[single_extra]();
   // compute pair bounce: krijt's energies, crack- and bulk-dissipated (on this rank, since the
-  // pair style was defined), elastic and surface (stored in its contacts now) [J].
-  nextra = 4;
+  // pair style was defined), elastic and surface (stored in its contacts now); then what the
+  // rolling, sliding and twisting springs dissipated, and their energy now [J].
+  nextra = 8;
   pvector = new double[nextra]();
   // A placeholder for the history fix, replaced in init_style, so that the fix list keeps the
   // order of the input script (as pair granular does).
@@ -249,6 +250,11 @@ bool PairBounce::contact(int i, int j, int &touch, double *history, const bounce
   c = bounce::dem::step(law, g, k, s, state);
   touch = state.touching;
   layout_.write(state, history);
+  if (c.narrower_than_xi_crit > 0.0)
+    stop_one(fmt::format("pair_style bounce: xi_crit = {:.6g} is invalid: expected xi_crit < a0 = {:.6g} m, the "
+                         "contact radius of atoms {} and {} (R_eff = {:.6g} m): the rolling model holds for contacts "
+                         "wider than its critical displacement (docs/resistance.md, Validity)",
+                         law.resistance->xi_crit, c.narrower_than_xi_crit, atom->tag[i], atom->tag[j], g.effective_radius));
   if (!c.finite())
     stop_one(fmt::format("pair_style bounce: the force between atoms {} and {} is not finite (overlap {:.6g} m, rate "
                          "{:.6g} m/s, dt {:.6g} s): the time step is too large for this law, or an input extreme "
@@ -262,7 +268,7 @@ bool PairBounce::contact(int i, int j, int &touch, double *history, const bounce
 void PairBounce::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  if (eflag) pvector[2] = pvector[3] = 0.0;  // the stored energies; 0 and 1 accumulate over the run
+  if (eflag) pvector[2] = pvector[3] = pvector[7] = 0.0;  // the stored energies; 0, 1, 4-6 accumulate
   if (fix_rigid_ && neighbor->ago == 0) update_rigid_masses();
   bounce::dem::StepSettings settings;
   settings.dt = update->dt;
@@ -308,13 +314,17 @@ void PairBounce::apply(int i, int j, const bounce::dem::ContactForce &c, const b
   const double share = newton_pair || j < nlocal ? 1.0 : 0.5;
   pvector[0] += share * c.crack_dissipated;
   pvector[1] += share * c.bulk_dissipated;
+  pvector[4] += share * c.rolling_dissipated;
+  pvector[5] += share * c.sliding_dissipated;
+  pvector[6] += share * c.twisting_dissipated;
   if (eflag) {
     pvector[2] += share * c.elastic;
     pvector[3] += share * c.surface;
+    pvector[7] += share * c.spring_energy;
   }
   if (evflag) {
     double **x = atom->x;
-    ev_tally_xyz(i, j, nlocal, newton_pair, c.elastic + c.surface, 0.0, l.force[0], l.force[1], l.force[2],
+    ev_tally_xyz(i, j, nlocal, newton_pair, c.elastic + c.surface + c.spring_energy, 0.0, l.force[0], l.force[1], l.force[2],
                  x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]);
   }
 }

@@ -146,7 +146,7 @@ double PairBounce::single(int i, int j, int, int, double, double, double factor_
   for (int d = 0; d < 3; d++) svector[d] = c.tangential[d];
   svector[3] = std::sqrt(c.tangential[0] * c.tangential[0] + c.tangential[1] * c.tangential[1] +
                          c.tangential[2] * c.tangential[2]);
-  return c.elastic + c.surface;
+  return c.elastic + c.surface + c.spring_energy;
 }
 
 // Each atom's rigid body's mass (0 if none), owned and ghost atoms, refreshed where the atoms

@@ -10,6 +10,7 @@
 
 #include "binding.hpp"
 #include "bounce/api/front_door.hpp"
+#include "bounce/contact/resistance.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "bounce/models/registry.hpp"
@@ -19,9 +20,22 @@ namespace bounce::api {
 
 namespace {
 
+// The rolling, sliding and twisting springs of docs/resistance.md: each `yes` or `no`, and xi_crit.
+std::vector<ParameterSpec> resistance_parameters() {
+  const auto on = [](const char* name, const char* help) {
+    return with_default(choice_parameter(name, {"yes", "no"}, help), std::string("no"));
+  };
+  return {on("rolling", "W07's rolling spring, held at xi_crit (docs/resistance.md): yes or no (default no)"),
+          on("sliding", "W07's sliding spring, the contact's tangential force instead of friction: yes or no (default no)"),
+          on("twisting", "W07's twisting spring: yes or no (default no)"),
+          with_default(real_parameter("xi_crit", "critical rolling displacement", "m", positive(),
+                                      "critical rolling displacement xi_crit [m] (default 8e-10, W07's)"),
+                       contact::resistance::standard_critical_rolling)};
+}
+
 CommandSpec make_pair_coeff_command() {
   CommandSpec c{"pair_coeff", "LAMMPS pair_style bounce: a model as the contact law of one pair of atom types", true,
-                true, {}};
+                true, resistance_parameters()};
   c.models = models::model_registry().names();  // every model has a DEM law (models/model.hpp)
   c.models_why = fmt::format("a model with a DEM law: {}", fmt::join(c.models, ", "));
   c.unused = {
@@ -68,6 +82,27 @@ const CommandSpec& pair_coeff_command() {
 }
 
 namespace {
+// pair_coeff's rolling, sliding and twisting (resistance_parameters) onto the law.
+void add_resistance(models::DemModel& law, const Pair& pair, const Parameters& own, bool wall) {
+  const bool rolling = own.text("rolling") == "yes", sliding = own.text("sliding") == "yes",
+             twisting = own.text("twisting") == "yes";
+  if (own.given("xi_crit") && !rolling) {
+    throw InvalidArgument("xi_crit", own.typed("xi_crit"), "rolling yes beside it (xi_crit is the rolling spring's)");
+  }
+  if (!rolling && !sliding && !twisting) return;
+  const char* first = rolling ? "rolling" : sliding ? "sliding" : "twisting";
+  if (wall) {
+    throw InvalidArgument(first, "yes", "no in fix wall/bounce: a wall contact has no contact pointers (rolling, "
+                                        "sliding and twisting act between atoms, in pair_style bounce)");
+  }
+  if (sliding && law.tangential) {
+    throw InvalidArgument("sliding", "yes", "no beside friction: W07's sliding spring is the contact's tangential force "
+                                            "(give friction or sliding yes, not both)");
+  }
+  law.resistance = models::ResistanceModel{contact::resistance::materials_of(pair), *own.real("xi_crit"), rolling,
+                                           sliding, twisting};
+}
+
 // The pair of a DEM law is built for its materials only: a placeholder radius and density stand
 // in for the atoms' (each contact gets its own R_eff and m_eff; the command refuses them as
 // inputs). The pair's inputs are passed on as typed, so that a message names what the user wrote.
@@ -81,7 +116,9 @@ models::DemModel dem_law(const CommandSpec& command, const Inputs& inputs, bool 
   pair_inputs["density"] = 1.0;
   if (wall && !b.pair.flag("rigid_wall")) pair_inputs["wall"] = true;
   const Pair pair = bounce::make_pair(bind_parameters(pair_parameters(), pair_inputs, "the pair"));
-  return models::make_dem_model(pair, b.model, b.model_parameters);
+  models::DemModel law = models::make_dem_model(pair, b.model, b.model_parameters);
+  add_resistance(law, pair, b.own, wall);
+  return law;
 }
 }  // namespace
 

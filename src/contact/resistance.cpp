@@ -42,28 +42,38 @@ Materials materials_of(const Pair& pair) {
           effective_shear_modulus(g1, m1.poisson_ratio, g2, m2.poisson_ratio), series, std::min(g1, g2)};
 }
 
+Springs springs(const Materials& m, double radius) {
+  const jkr::Parameters jp{radius, m.effective_modulus, m.surface_energy};
+  Springs s;
+  const double a0 = jkr::equilibrium_contact_radius(jp);  // W07: (9 pi gamma_s R^2 / E*)^{1/3}
+  s.contact_radius = a0;
+  s.rolling = 4.0 * -jkr::pull_off_force(jp) / radius;  // W07 §2.2: k_r = 4 F_c / R, F_c = 3 pi gamma_s R
+  // W07 §2.2 sliding: k_s = 8 a0 G*; like bodies xi_s = (2 - nu) a0 / (16 pi), i.e. F_slide = G a0^2 / (4 pi).
+  s.sliding = 8.0 * a0 * m.tangential_modulus;
+  s.sliding_critical = m.weaker_shear * a0 * a0 / (4.0 * pi) / s.sliding;
+  // W07 §2.2 twisting: k_t = (16/3) G a0^3; like bodies phi_crit = 1/(16 pi), i.e. M_twist = G a0^3 / (3 pi).
+  s.twisting = 16.0 / 3.0 * m.series_shear * a0 * a0 * a0;
+  s.twisting_critical = m.weaker_shear / (16.0 * pi * m.series_shear);
+  return s;
+}
+
 Resistance contact_resistance(const Materials& m, double radius, double xi_crit) {
   const jkr::Parameters jp{radius, m.effective_modulus, m.surface_energy};
+  const Springs k = springs(m, radius);
   Resistance r;
   r.surface_energy = 0.5 * m.surface_energy;
-  r.contact_radius = jkr::equilibrium_contact_radius(jp);  // W07: (9 pi gamma_s R^2 / E*)^{1/3}
-  r.pull_off_force = -jkr::pull_off_force(jp);            // W07: 3 pi gamma_s R
-  r.critical_overlap = -jkr::separation_overlap(jp);      // W07: a0^2 / (2 6^{1/3} R)
+  r.contact_radius = k.contact_radius;
+  r.pull_off_force = -jkr::pull_off_force(jp);        // W07: 3 pi gamma_s R
+  r.critical_overlap = -jkr::separation_overlap(jp);  // W07: a0^2 / (2 6^{1/3} R)
   r.break_energy = break_energy_factor() * r.pull_off_force * r.critical_overlap;
-  const double a0 = r.contact_radius;
-  // W07 §2.2 rolling: spring k_r = 4 F_c / R on xi, moment k_r R xi, limit at xi_crit.
-  const double k_r = 4.0 * r.pull_off_force / radius;
-  r.rolling = {k_r, xi_crit, k_r * radius * xi_crit, 0.0};
+  // The limits are the springs at their critical displacements (the rolling moment's lever R),
+  // and each energy the limit's work over a quarter turn.
+  r.rolling = {k.rolling, xi_crit, k.rolling * radius * xi_crit, 0.0};
   r.rolling.energy = 0.5 * pi * r.rolling.limit;       // DT97: E_roll = 6 pi^2 gamma_s R xi_crit
   r.rolling_force = r.rolling.limit / (2.0 * radius);  // DT95: F_roll = 6 pi gamma_s xi_crit
-  // W07 §2.2 sliding: k_s = 8 a0 G*; like bodies: xi_s = (2 - nu) a0 / (16 pi), F_slide = G a0^2 / (4 pi).
-  const double k_s = 8.0 * a0 * m.tangential_modulus;
-  const double f_slide = m.weaker_shear * a0 * a0 / (4.0 * pi);
-  r.sliding = {k_s, f_slide / k_s, f_slide, f_slide * 0.5 * pi * radius};
-  // W07 §2.2 twisting: k_t = (16/3) G a0^3; like bodies: phi_crit = 1/(16 pi), M_twist = G a0^3 / (3 pi).
-  const double k_t = 16.0 / 3.0 * m.series_shear * a0 * a0 * a0;
-  const double m_twist = m.weaker_shear * a0 * a0 * a0 / (3.0 * pi);
-  r.twisting = {k_t, m_twist / k_t, m_twist, 0.5 * pi * m_twist};
+  const double f_slide = k.sliding * k.sliding_critical, m_twist = k.twisting * k.twisting_critical;
+  r.sliding = {k.sliding, k.sliding_critical, f_slide, f_slide * 0.5 * pi * radius};
+  r.twisting = {k.twisting, k.twisting_critical, m_twist, 0.5 * pi * m_twist};
   return r;
 }
 

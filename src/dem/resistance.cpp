@@ -20,37 +20,38 @@ double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2]
 double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
 Vec scaled(const Vec& a, double s) { return {s * a[0], s * a[1], s * a[2]}; }
 
-// Rodrigues' rotation of v by `angle` about the unit `axis`.
-void turn(Vec& v, const Vec& axis, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle), along = dot(axis, v) * (1.0 - c);
-  const Vec across = cross(axis, v);
-  for (int d = 0; d < 3; d++) v[d] = v[d] * c + across[d] * s + axis[d] * along;
+// Cayley's rotation of v with h = (the rotation's vector) / 2: v + 2 (h x v + h x (h x v)) / (1 + h.h),
+// a rotation by 2 atan|h| about h that needs no sine and keeps v a unit vector.
+void turn(Vec& v, const Vec& h) {
+  const Vec once = cross(h, v), twice = cross(h, once);
+  const double f = 2.0 / (1.0 + dot(h, h));
+  for (int d = 0; d < 3; d++) v[d] += f * (once[d] + twice[d]);
 }
 
-// A pointer turned with its body over the step: by |omega| dt about omega.
+// A pointer turned with its body over the step: about omega by 2 atan(|omega| dt / 2) = |omega| dt
+// (1 - (omega dt)^2 / 12 ...).
 void turn_with(Vec& v, const double* omega, double dt) {
-  const Vec w{omega[0], omega[1], omega[2]};
-  const double rate = norm(w);
-  if (rate > 0.0) turn(v, scaled(w, 1.0 / rate), rate * dt);
+  turn(v, {0.5 * dt * omega[0], 0.5 * dt * omega[1], 0.5 * dt * omega[2]});
 }
 
 // W07's correction beyond a critical displacement: both pointers turned about n x (the
-// displacement) until its length is `critical` (a few passes: each leaves the square of the last
-// miss), `sign2` = -1 turning the second pointer back (rolling), +1 with the first (sliding).
+// displacement) until its length is `critical` to 1e-9 (each pass leaves about the square of the
+// last miss; the length, a difference of unit vectors, is itself known to ~1e-16 R/|x|), `sign2` = -1 turning the second pointer back (rolling), +1 with the first (sliding).
 // The spring energy it released [J].
 template <class Displacement>
 double hold(Vec& p1, Vec& p2, const Vec& n, double k, double critical, double per_angle, double sign2,
             const Displacement& displacement) {
   Vec x = displacement(p1, p2);
   const double before = 0.5 * k * dot(x, x);
-  for (int pass = 0; pass < 4 && norm(x) > critical; pass++) {
+  double length = norm(x);
+  for (int pass = 0; pass < 4 && length > critical * (1.0 + 1e-9); pass++) {
     const Vec axis = cross(n, x);
-    const double length = norm(axis);
-    if (!(length > 0.0)) break;  // along n: no tangential displacement to hold
-    const double angle = (norm(x) - critical) / per_angle;
-    turn(p1, scaled(axis, 1.0 / length), angle);
-    turn(p2, scaled(axis, 1.0 / length), sign2 * angle);
+    const double across = norm(axis);
+    if (!(across > 0.0)) break;  // along n: no tangential displacement to hold
+    const Vec h = scaled(axis, 0.5 * (length - critical) / (per_angle * across));
+    turn(p1, h), turn(p2, scaled(h, sign2));
     x = displacement(p1, p2);
+    length = norm(x);
   }
   return before - 0.5 * k * dot(x, x);
 }
@@ -66,8 +67,9 @@ void Resistance::step(const SubContext& c, State& state, ContactForce& out) {
   const bool forms = dot(p1, p1) == 0.0;  // the pointers start where the contact is now: no turn yet
   if (forms) p1 = scaled(n, -1.0), p2 = n, state.twist = 0.0;
   const double r1 = k.radius1, r2 = k.radius2, R = c.g.effective_radius, dt = c.s.dt;
-  const contact::resistance::Resistance springs = contact::resistance::contact_resistance(m.materials, R, m.xi_crit);
-  const double k_r = springs.rolling.stiffness, k_s = springs.sliding.stiffness, k_t = springs.twisting.stiffness;
+  const contact::resistance::Springs springs = contact::resistance::springs(m.materials, R);
+  if (forms && m.rolling && !(m.xi_crit < springs.contact_radius)) out.narrower_than_xi_crit = springs.contact_radius;
+  const double k_r = springs.rolling, k_s = springs.sliding, k_t = springs.twisting;
   const auto rolling = [R](const Vec& a, const Vec& b) { return Vec{R * (a[0] + b[0]), R * (a[1] + b[1]), R * (a[2] + b[2])}; };
   const auto sliding = [&](const Vec& a, const Vec& b) {  // the tangential part of r1 p1 - r2 p2
     const Vec u{r1 * a[0] - r2 * b[0], r1 * a[1] - r2 * b[1], r1 * a[2] - r2 * b[2]};
@@ -79,8 +81,8 @@ void Resistance::step(const SubContext& c, State& state, ContactForce& out) {
     state.twist += ((k.omega1[0] - k.omega2[0]) * n[0] + (k.omega1[1] - k.omega2[1]) * n[1] +
                     (k.omega1[2] - k.omega2[2]) * n[2]) * dt;
     if (m.rolling) out.rolling_dissipated = hold(p1, p2, n, k_r, m.xi_crit, 2.0 * R, -1.0, rolling);
-    if (m.sliding) out.sliding_dissipated = hold(p1, p2, n, k_s, springs.sliding.critical_displacement, r1 + r2, 1.0, sliding);
-    const double phi_crit = springs.twisting.critical_displacement;
+    if (m.sliding) out.sliding_dissipated = hold(p1, p2, n, k_s, springs.sliding_critical, r1 + r2, 1.0, sliding);
+    const double phi_crit = springs.twisting_critical;
     if (m.twisting && std::abs(state.twist) > phi_crit) {
       out.twisting_dissipated = 0.5 * k_t * (state.twist * state.twist - phi_crit * phi_crit);
       state.twist = std::copysign(phi_crit, state.twist);

@@ -52,8 +52,19 @@ Materials materials_of(const Pair& pair);
 Resistance contact_resistance(const Pair& pair, double xi_crit);
 
 /// The same for a contact of effective radius R [m] (R1 against a wall) between `materials`,
-/// unchecked: the DEM step's (its caller checks xi_crit < a0 where the contact forms).
+/// unchecked (its caller checks xi_crit < a0).
 Resistance contact_resistance(const Materials& materials, double effective_radius, double xi_crit);
+
+/// What a DEM step needs of a contact of effective radius R (one cube root): W07 §2.2's springs.
+struct Springs {
+  double contact_radius = 0.0;     ///< a0 [m]
+  double rolling = 0.0;            ///< k_r [N/m]
+  double sliding = 0.0;            ///< k_s [N/m]
+  double sliding_critical = 0.0;   ///< xi_s [m]
+  double twisting = 0.0;           ///< k_t [N m/rad]
+  double twisting_critical = 0.0;  ///< phi_crit [rad]
+};
+Springs springs(const Materials& materials, double effective_radius);
 
 /// E_break / (F_c delta_c) = 1.5426…: the work from equilibrium (a = a0) to the fold
 /// (a = a0/6^{2/3}, delta = -delta_c) on W07's JKR curve, in closed form.

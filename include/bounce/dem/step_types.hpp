@@ -58,6 +58,9 @@ struct ContactForce {
   /// by moving beyond its critical displacement [J].
   double spring_energy = 0.0;
   double rolling_dissipated = 0.0, sliding_dissipated = 0.0, twisting_dissipated = 0.0;
+  /// a0 [m] of a contact that formed no wider than the law's xi_crit, outside the rolling model
+  /// (docs/resistance.md, Validity); 0 for every other.
+  double narrower_than_xi_crit = 0.0;
   bool finite() const {
     bool all = std::isfinite(normal);
     for (int d = 0; d < 3; d++) all = all && std::isfinite(tangential[d]) && std::isfinite(torque1[d]) && std::isfinite(torque2[d]);
