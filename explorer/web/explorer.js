@@ -240,6 +240,7 @@
   }
 
   createBounce().then((module) => {
+    state.timings.module_ready_ms = performance.now();
     state.call = module.cwrap("bounce_explorer_call", "number", ["string", "string"]);
     state.text = module.cwrap("bounce_explorer_text", "string", []);
     fillSelects();
