@@ -5,7 +5,7 @@
 (function () {
   const $ = (id) => document.getElementById(id);
   const CURVE_POINTS = 100;
-  const state = { call: null, text: null, models: {}, collideText: "", curve: null, plots: {},
+  const state = { call: null, text: null, models: {}, collideText: "", historyText: "", curve: null, plots: {},
                   draws: 0, pending: false, timings: {} };
   window.bounceExplorer = state;
 
@@ -152,20 +152,26 @@
     state.pending = false;
     clearMarks();
     const pair = pairInputs();
-    const collision = run("collide", { ...pair, velocity: $("velocity").value.trim(), trajectory: true });
+    // ε and the budget as `bounce collide` gives them (a force law may use its master curve),
+    // the history from the same collision integrated with its trajectory (--trajectory).
+    const velocity = $("velocity").value.trim();
+    const collision = run("collide", { ...pair, velocity });
     if (collision.code !== 0) return showError(collision.value);
+    const history = run("collide", { ...pair, velocity, trajectory: true });
+    if (history.code !== 0) return showError(history.value);
     const start = performance.now();
     const curve = run("curve", curveInputs(pair));
     if (curve.code !== 0) {
       return showError(curve.value);
     }
     state.collideText = collision.text;
+    state.historyText = history.text;
     state.curve = curve.value;
     state.marker = [collision.value.velocity, collision.value.cor];
     $("results").classList.remove("stale");
     curvePlot([curve.value.points.map((p) => p.velocity), curve.value.points.map((p) => p.cor)]);
     state.timings.curve_ms = performance.now() - start;
-    historyPlot(collision.value.trajectory);
+    historyPlot(history.value.trajectory);
     showSummary(collision.value, curve.value);
     showBudget(collision.value.energy);
     $("timing").textContent = `100-velocity curve: ${state.timings.curve_ms.toFixed(0)} ms`;
@@ -236,6 +242,7 @@
     $("material").addEventListener("change", () => { $("custom").hidden = $("material").value !== "custom"; });
     $("model").addEventListener("change", () => { $("tvis").disabled = $("tvis-slider").disabled = !state.models[$("model").value]; });
     $("download-json").addEventListener("click", () => download("collide.json", "application/json", `${state.collideText}\n`));
+    $("download-trajectory").addEventListener("click", () => download("collide-trajectory.json", "application/json", `${state.historyText}\n`));
     $("download-csv").addEventListener("click", () => download("curve.csv", "text/csv", curveCsv()));
   }
 

@@ -2,7 +2,9 @@
 // The explorer in a real browser (docs/explorer.md): Debian's chromium, headless, driven by
 // playwright-core, opens out/explorer/index.html from file:// (the hardest host: no server) and
 //   1. sets ice/ice, 1 µm, 3 m/s, krijt, T_vis = 1e-12 s and reads ε from the page; compares it and
-//      the whole collision JSON the page downloads with `bounce collide --json` (same inputs);
+//      the collision JSON the page downloads with `bounce collide --json` (same inputs), and the
+//      one with its trajectory with `bounce collide --trajectory --json`;
+//      the same for every other model the page offers;
 //   2. moves the T_vis slider with the keyboard and sees the ε(v) curve redrawn with new values;
 //   3. types a negative radius and sees the field marked and the CLI's own message, no NaN;
 //   4. measures the first render and a 100-velocity curve in the browser beside the native CLI
@@ -80,6 +82,7 @@ async function setInputs(page, inputs) {
   await page.selectOption("#material2", "same");
   await page.selectOption("#model", inputs.model);
   for (const name of ["radius", "velocity", "tvis"]) {
+    if (!(await page.isEnabled(`#${name}`))) continue;  // T_vis with a model that takes none
     await page.fill(`#${name}`, inputs[name]);
     await page.dispatchEvent(`#${name}`, "change");
   }
@@ -92,22 +95,44 @@ async function waitForUpdate(page) {
   await page.waitForFunction(() => !window.bounceExplorer.pending);
 }
 
-async function downloadedJson(page) {
-  const [download] = await Promise.all([page.waitForEvent("download"), page.click("#download-json")]);
+async function downloadedJson(page, button) {
+  const [download] = await Promise.all([page.waitForEvent("download"), page.click(button)]);
   return fs.readFileSync(await download.path(), "utf8");
+}
+
+// A download against the CLI's JSON for the same inputs.
+async function checkDownload(page, opts, button, inputs) {
+  const cli = JSON.parse(execFileSync(opts.bounce, cliArgs("collide", { ...inputs, json: true })).toString());
+  const problems = compareJson(JSON.parse(await downloadedJson(page, button)), cli);
+  const flags = inputs.trajectory ? " --trajectory" : "";
+  check(problems.length === 0, `${button}: bounce collide${flags} --json's keys and values (${problems.slice(0, 3).join("; ")})`);
 }
 
 async function checkEpsilon(page, opts, inputs) {
   await setInputs(page, inputs);
   const epsPage = Number(await page.getAttribute("#cor", "data-value"));
-  const cliText = execFileSync(opts.bounce, cliArgs("collide", { ...inputs, trajectory: true, json: true })).toString();
-  const cli = JSON.parse(cliText);
+  const cli = JSON.parse(execFileSync(opts.bounce, cliArgs("collide", { ...inputs, json: true })).toString());
   const relative = Math.abs(epsPage - cli.cor) / Math.abs(cli.cor);
   console.log(`epsilon: page ${epsPage}, bounce collide ${cli.cor}, relative difference ${relative.toExponential(2)}`);
   check(cli.outcome === "bounce" && relative <= TOLERANCE, "ε on the page equals bounce collide's to 1e-9 (ice/ice, 1 µm, 3 m/s)");
-  const problems = compareJson(JSON.parse(await downloadedJson(page)), cli);
-  check(problems.length === 0, `the downloaded JSON has bounce collide --json's keys and values (${problems.slice(0, 3).join("; ")})`);
+  await checkDownload(page, opts, "#download-json", inputs);
+  await checkDownload(page, opts, "#download-trajectory", { ...inputs, trajectory: true });
   return { eps_page: epsPage, eps_cli: cli.cor, eps_relative_difference: relative };
+}
+
+// Every model the page offers, at the same inputs: ε as bounce collide gives it.
+async function checkModels(page, opts, inputs) {
+  const models = await page.$$eval("#model option", (options) => options.map((o) => o.value));
+  for (const model of models) {
+    const takesTvis = await page.evaluate((m) => window.bounceExplorer.models[m], model);
+    await setInputs(page, { ...inputs, model });
+    const epsPage = Number(await page.getAttribute("#cor", "data-value"));
+    const given = takesTvis ? { ...inputs, model } : { material: inputs.material, radius: inputs.radius, velocity: inputs.velocity, model };
+    const cli = JSON.parse(execFileSync(opts.bounce, cliArgs("collide", { ...given, json: true })).toString());
+    const relative = Math.abs(epsPage - cli.cor) / Math.max(Math.abs(cli.cor), 1e-300);
+    check(epsPage === cli.cor || relative <= TOLERANCE, `${model}: ε on the page ${epsPage}, bounce collide ${cli.cor}`);
+  }
+  await setInputs(page, inputs);
 }
 
 async function checkSlider(page) {
@@ -178,6 +203,7 @@ async function main() {
     const eps = await checkEpsilon(page, opts, inputs);
     if (opts.screenshot) await page.screenshot({ path: opts.screenshot, fullPage: true });
     const timings = await measure(page, opts, inputs);
+    await checkModels(page, opts, inputs);
     await checkSlider(page);
     await checkBadRadius(page, opts, inputs);
     check(errors.length === 0, `no script error on the page (${errors.join("; ")})`);
