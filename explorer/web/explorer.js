@@ -4,7 +4,6 @@
 "use strict";
 (function () {
   const $ = (id) => document.getElementById(id);
-  const CURVE_POINTS = 100;
   const state = { call: null, text: null, models: {}, collideText: "", historyText: "", curve: null, plots: {},
                   draws: 0, pending: false, timings: {} };
   window.bounceExplorer = state;
@@ -143,9 +142,9 @@
     }, data, $("history-plot"));
   }
 
-  // The 100-velocity curve's command: "LO:HI" typed, the page adds the number of points.
+  // The curve's command: "LO:HI:N" as typed (100 velocities by default), log-spaced.
   function curveInputs(pair) {
-    return { ...pair, velocities: `${$("velocities").value.trim()}:${CURVE_POINTS}`, log: true };
+    return { ...pair, velocities: $("velocities").value.trim(), log: true };
   }
 
   function update() {
@@ -174,7 +173,7 @@
     historyPlot(history.value.trajectory);
     showSummary(collision.value, curve.value);
     showBudget(collision.value.energy);
-    $("timing").textContent = `100-velocity curve: ${state.timings.curve_ms.toFixed(0)} ms`;
+    $("timing").textContent = `${curve.value.points.length}-velocity curve: ${state.timings.curve_ms.toFixed(0)} ms`;
   }
 
   function schedule() {
