@@ -160,9 +160,7 @@
     if (history.code !== 0) return showError(history.value);
     const start = performance.now();
     const curve = run("curve", curveInputs(pair));
-    if (curve.code !== 0) {
-      return showError(curve.value);
-    }
+    if (curve.code !== 0) return showError(curve.value);
     state.collideText = collision.text;
     state.historyText = history.text;
     state.curve = curve.value;
