@@ -22,6 +22,11 @@
 #   make check-pip   opt-in: pip install --no-build-isolation . into a fresh venv, import, pip wheel
 #   make check-debian13  opt-in, root: make test, make demo and make check-pip in a fresh Debian 13
 #                    (trixie) root made by debootstrap (docs/install.md records the times)
+#   make explorer    the browser explorer: bounce's library compiled to WebAssembly by Debian's
+#                    emscripten, with the page, into out/explorer/ (docs/explorer.md; opens from
+#                    file:// or any static host); `make test` runs its browser test when chromium
+#                    is installed (.ci/run installs it)
+#   make explore     make explorer, then serve out/explorer on http://127.0.0.1:$(PORT)/
 #   make lammps-demo opt-in, on 2 MPI ranks: the homogeneous cooling state of two granular gases
 #                    (~7 min; out/figures/hcs-cooling, out/hcs/results.json) and the aggregation of
 #                    sticky ice grains with K13's law against elastic JKR (~2 min;
@@ -35,6 +40,12 @@ CMAKE_FLAGS ?=
 ASAN_DIR  ?= build-asan
 FUZZ_SECONDS ?= 600
 FUZZ_TARGETS ?= materials table rules ranges cli fit_data
+# The browser explorer's build tree (emscripten), its page, the browser its test drives, and the
+# port `make explore` serves on.
+EXPLORER_DIR ?= build-explorer
+EXPLORER_OUT ?= out/explorer
+CHROMIUM  ?= /usr/bin/chromium
+PORT      ?= 8000
 # The sanitizer build's own packages (clang with its sanitizer and libFuzzer runtimes; LLVM's
 # OpenMP, which SUNDIALS 7's CMake package looks for and clang finds only with it), and
 # clang-tidy for the size check (`make lint`, test lint_sizes).
@@ -44,7 +55,8 @@ SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_aft
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 .PHONY: all build deps deps-sanitize configure test demo bench check-long check-posterior lint clean \
-        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip check-debian13
+        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip check-debian13 \
+        deps-explorer deps-browser explorer explore
 
 all: build
 
@@ -65,6 +77,7 @@ build: configure
 
 test: deps-sanitize
 	@$(MAKE) --no-print-directory build
+	@if [ -x $(CHROMIUM) ]; then $(MAKE) --no-print-directory explorer; fi
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE long
 	@$(MAKE) --no-print-directory test-sanitize
 
@@ -82,7 +95,7 @@ build-sanitize: $(ASAN_DIR)/CMakeCache.txt
 # system compiler, without the sanitizers' runtime) and the size check (the same sources).
 test-sanitize: deps-sanitize
 	@$(MAKE) --no-print-directory build-sanitize
-	cd $(ASAN_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE 'long|python|packaging|lint'
+	cd $(ASAN_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE 'long|python|packaging|lint|browser'
 
 fuzz: deps-sanitize
 	@$(MAKE) --no-print-directory build-sanitize
@@ -112,6 +125,31 @@ check-pip: deps
 check-debian13:
 	./scripts/check-debian13.sh
 
+# Debian's emscripten, and npm where node has none (Debian's nodejs does not bring it; NodeSource's does).
+deps-explorer:
+	@./scripts/install-deps.sh emscripten
+	@command -v npm >/dev/null 2>&1 || ./scripts/install-deps.sh npm
+
+# The browser the explorer's test drives (about 100 MB): `.ci/run` installs it, `make test` uses
+# it when present.
+deps-browser:
+	@./scripts/install-deps.sh chromium
+
+# The library's generated sources come from the native build tree (its master-curve generator);
+# uPlot and the test's driver from npm, pinned by explorer/package-lock.json. Debian's emscripten
+# finds its node modules (acorn) through NODE_PATH when node is not Debian's own.
+explorer: deps deps-explorer
+	@$(MAKE) --no-print-directory configure
+	cmake --build $(BUILD_DIR) --target generated/master_curve_data.cpp
+	cd explorer && npm ci --no-audit --no-fund --loglevel=error
+	emcmake cmake -S explorer -B $(EXPLORER_DIR) -G Ninja -DBOUNCE_GENERATED=$(abspath $(BUILD_DIR))/generated \
+	  -DBOUNCE_OUT=$(abspath $(EXPLORER_OUT)) >/dev/null
+	NODE_PATH=/usr/share/nodejs cmake --build $(EXPLORER_DIR) -j $(JOBS)
+	@echo "bounce: the explorer is in $(EXPLORER_OUT)/ (open index.html, or make explore; docs/explorer.md)"
+
+explore: explorer
+	$(PYTHON) tools/explore.py --dir $(EXPLORER_OUT) --port $(PORT)
+
 lammps-demo: lammps
 	$(PYTHON) tools/hcs.py --build $(BUILD_DIR) --out out
 	$(PYTHON) tools/aggregation.py --build $(BUILD_DIR) --out out
@@ -139,4 +177,4 @@ lint: build
 	./tools/check_sizes.sh $(BUILD_DIR)
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) out build-package build-pip dist
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(EXPLORER_DIR) out build-package build-pip dist

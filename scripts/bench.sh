@@ -22,3 +22,9 @@ if [ -x "$build_dir/lammps/lmp" ] && [ -f "$build_dir/lammps/bounceplugin.so" ];
 else
   echo "== (no LAMMPS build: make lammps for the LAMMPS benchmark)"
 fi
+if [ -f out/explorer/index.html ] && [ -x /usr/bin/chromium ]; then
+  echo "== the browser explorer: first render and a 100-velocity curve, beside the native CLI"
+  node tests/explorer/browser_test.js --page out/explorer --bounce "$build_dir/bin/bounce" | tail -1
+else
+  echo "== (no explorer or no chromium: make explorer and make deps-browser for the browser benchmark)"
+fi

@@ -1,15 +1,15 @@
 #!/usr/bin/python3
 """Fails on any #include that runs up bounce's layer order (docs/architecture.md).
 
-    core -> pair -> contact -> models -> dynamics -> dem -> analytic -> analysis -> api -> (apps | python | lammps)
+    core -> pair -> contact -> models -> dynamics -> dem -> analytic -> analysis -> api -> (apps | python | lammps | explorer)
 
 A file belongs to the layer of its folder: include/bounce/<layer>/, src/<layer>/, apps/bounce
-(the CLI) or python/src (the bindings). Every `#include "..."` and `#include <bounce/...>` is
+(the CLI), python/src (the bindings) or explorer/src (the browser's binding). Every `#include "..."` and `#include <bounce/...>` is
 resolved: "bounce/<layer>/..." names its layer; any other quoted include is looked up next
 to the including file, then anywhere in the layer folders (a private include directory such
 as src/analytic makes a bare name compile from elsewhere); one found nowhere is a system or
 generated header and no edge. An edge may go to the same layer or to one below it, never
-up; the front ends (apps, python, lammps) may not include each other, nor the library's private
+up; the front ends (apps, python, lammps, explorer) may not include each other, nor the library's private
 headers under src/ (only its public include/bounce/).
 
     check_layers.py [REPO]     exit 0 and "layers: N edges, all downward", or 1 and the offending edges
@@ -19,7 +19,7 @@ import re
 import sys
 
 ORDER = ["core", "pair", "contact", "models", "dynamics", "dem", "analytic", "analysis", "api"]
-FRONT_ENDS = {"apps": "apps/bounce", "python": "python/src", "lammps": "lammps"}
+FRONT_ENDS = {"apps": "apps/bounce", "python": "python/src", "lammps": "lammps", "explorer": "explorer/src"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+(?:"([^"]+)"|<(bounce/[^>]+)>)', re.M)
 
 
@@ -110,7 +110,7 @@ def main():
         print("\n".join(bad))
         print(f"layers: {len(bad)} of {count} edges break the order {' -> '.join(ORDER)} -> apps | python")
         return 1
-    print(f"layers: {count} edges, all downward ({' -> '.join(ORDER)} -> apps | python | lammps)")
+    print(f"layers: {count} edges, all downward ({' -> '.join(ORDER)} -> apps | python | lammps | explorer)")
     return 0
 
 

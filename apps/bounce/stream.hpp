@@ -10,18 +10,14 @@
 #include <utility>
 #include <vector>
 
+#include "bounce/api/json.hpp"
 #include "bounce/core/record.hpp"
 
 namespace bounce::cli {
 
-/// `value` as JSON in nlohmann's dump(2) layout (2-space indent, keys sorted; numbers, strings
-/// and literals as nlohmann writes them), its first line unindented and the rest indented for
-/// nesting at `depth`. The caller has checked that every number is finite (non_finite_at).
-void write_json(std::ostream& out, const Value& value, int depth = 0);
-
-/// Where `value` holds a number that is not finite: "contact_time = inf" (a Table's cell as
-/// "trajectory[3].overlap = nan"), or "" when every number is finite.
-std::string non_finite_at(const Value& value);
+/// The library's JSON writer (bounce/api/json.hpp), which the explorer shares.
+using api::non_finite_at;
+using api::write_json;
 
 /// A CSV written to stdout as it comes: the header with the first rows, then each row as one
 /// line, flushed (a Ctrl-C keeps the rows written, docs/cli.md).

@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 
+#ifndef BOUNCE_WITHOUT_CVODE
 #include "cvode_integrator.hpp"
+#endif
 #include "rodas_integrator.hpp"
 
 namespace bounce::dynamics::detail {
@@ -87,7 +89,11 @@ void SwappedIndependent::events(double s, const double* z, double* g) const {
 std::unique_ptr<StiffIntegrator> make_stiff_integrator(StiffEngine engine, const StiffSystem& system,
                                                        const std::vector<double>& y0, double t0,
                                                        const StiffSettings& settings) {
+#ifndef BOUNCE_WITHOUT_CVODE
   if (engine == StiffEngine::cvode) return std::make_unique<CvodeIntegrator>(system, y0, t0, settings);
+#else  // the browser explorer's build (docs/explorer.md): RODAS only
+  if (engine == StiffEngine::cvode) throw NumericalError("SUNDIALS CVODE is not part of this build (the browser explorer's); RODAS only");
+#endif
   return std::make_unique<RodasIntegrator>(system, y0, t0, settings);
 }
 
