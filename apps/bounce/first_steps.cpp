@@ -66,6 +66,8 @@ const Steps& steps() {
        {"an atlas file (bounce atlas build) and --csv",
         {"bounce atlas build --model viscoelastic --A 1e-6 --materials ice-bshp96 --radius 1e-3:1e-2:4 "
          "--velocity 0.1:10:5 --tol 1e-3 -o ice.h5 && bounce atlas export ice.h5 --csv"}}},
+      {"aggregate build", {"--kind bpca|bcca, --n, --radius, --material (or --density) and -o FILE.data",
+                           {"bounce aggregate build --kind bpca --n 1000 --radius 1e-7 --material water-ice -o a.data"}}},
       {"completion", {"", {"bounce completion > bounce.bash"}}},
   };
   return table;

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "binding.hpp"
+#include "bounce/api/aggregate.hpp"
 #include "bounce/api/atlas.hpp"
 #include "bounce/contact/law.hpp"
 #include "bounce/core/checks.hpp"
@@ -99,6 +100,7 @@ const std::vector<CommandSpec>& commands() {
 
 const CommandSpec& command(std::string_view name) {
   if (name.starts_with("atlas ")) return atlas_command(name);  // `bounce atlas WORD`
+  if (name == "aggregate build") return aggregate_commands().front();  // `bounce aggregate build`
   return find_named(commands(), name, "command");
 }
 
