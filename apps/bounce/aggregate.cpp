@@ -63,7 +63,8 @@ std::function<int()> build(Options& o) {
       report(done, total);
     });
     std::optional<aggregate::FractalFit> ensemble;
-    if (job.ensemble > 0) ensemble = aggregate::ensemble_fit(job.request, job.ensemble);
+    Progress samples("bounce aggregate build --ensemble (aggregates)", *progress);
+    if (job.ensemble > 0) ensemble = aggregate::ensemble_fit(job.request, job.ensemble, samples);
     const Record r = api::aggregate_record(job, built, ensemble);
     const double margin = 4.0 * job.request.radius;  // docs/aggregates.md: the box 4r beyond the surfaces
     write_file(*output, aggregate::lammps_data(built, job.density, margin, api::aggregate_title(job)));

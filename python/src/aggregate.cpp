@@ -43,8 +43,9 @@ py::dict build(const py::kwargs& kwargs, const std::optional<std::string>& outpu
   Record record;
   {
     py::gil_scoped_release release;
-    built = aggregate::build(job.request);
-    if (job.ensemble > 0) ensemble = aggregate::ensemble_fit(job.request, job.ensemble);
+    const auto interruptible = [](std::size_t, std::size_t) { check_signals_without_gil(); };  // Ctrl-C
+    built = aggregate::build(job.request, interruptible);
+    if (job.ensemble > 0) ensemble = aggregate::ensemble_fit(job.request, job.ensemble, interruptible);
     record = api::aggregate_record(job, built, ensemble);
   }
   if (output) {
