@@ -24,6 +24,7 @@
 #include "first_steps.hpp"
 #include "interrupt.hpp"
 #include "output.hpp"
+#include "resistance.hpp"
 
 namespace {
 
@@ -43,7 +44,7 @@ std::vector<std::string> long_options(const CLI::App& app) {
 // command's own option it looks like a typo of (`--velocty`: did you mean --velocity?).
 std::string unexpected_argument(const CLI::App& app, const std::vector<const CLI::App*>& commands) {
   for (const CLI::App* command : commands) {
-    if (!command->parsed()) continue;
+    if (!command->parsed() || !command->get_subcommands().empty()) continue;  // `contact` of `contact resistance`
     const auto extras = command->remaining();
     const std::string name = full_name(*command);
     const std::vector<std::string> own = long_options(*command);
@@ -225,6 +226,7 @@ int run(int argc, const char* const* argv) {
     names.push_back(spec.name);
   }
   for (Command& c : add_atlas_commands(app)) commands.push_back(std::move(c));
+  commands.push_back(add_resistance_command(*app.get_subcommand("contact")));
   names.push_back("atlas");
   for (Command& c : add_aggregate_commands(app)) commands.push_back(std::move(c));
   names.push_back("aggregate");
@@ -244,7 +246,8 @@ int run(int argc, const char* const* argv) {
   }
   if (const std::optional<int> code = parse(app, argc, argv, commands, names)) return *code;
   for (const Command& command : commands) {
-    if (!command.app->parsed()) continue;
+    // `contact resistance` parses `contact` too: the word after it runs
+    if (!command.app->parsed() || !command.app->get_subcommands().empty()) continue;
     if (const std::string missing = needs(*command.app, argc); !missing.empty()) {
       std::cerr << "bounce: error: " << missing << '\n';
       return 2;

@@ -11,8 +11,9 @@ namespace {
 
 using Steps = std::map<std::string_view, FirstSteps>;
 
-const Steps& steps() {
-  static const Steps table{
+// The commands of one word.
+Steps command_steps() {
+  return {
       {"materials", {"", {"bounce materials", "bounce materials --json"}}},
       {"models", {"", {"bounce models", "bounce models --json"}}},
       {"contact",
@@ -53,6 +54,18 @@ const Steps& steps() {
       {"lammps",
        {"the bodies (--material NAME, or --E, --nu and --density), --radius and the model's parameters",
         {"bounce lammps --material ice-bshp96 --radius 0.01 --A 1e-5"}}},
+      {"completion", {"", {"bounce completion > bounce.bash"}}},
+  };
+}
+
+// The commands of two words: `contact resistance`, `atlas build` and its kin, `aggregate build`.
+Steps subcommand_steps() {
+  return {
+      {"contact resistance",
+       {"the bodies (--materials A[,B], or --E, --nu and --gamma or --surface-energy) and --radius",
+        {"bounce contact resistance --materials water-ice --radius 1e-7",
+         "bounce contact resistance --E 7e9 --nu 0.25 --density 1000 --surface-energy 0.1 --radius 1e-7 --xi-crit 8e-10 "
+         "--json"}}},
       {"atlas build",
        {"--materials, the model, --radius MIN:MAX:N, --velocity MIN:MAX:N and -o FILE",
         {"bounce atlas build --model viscoelastic --A 1e-6 --materials ice-bshp96 --radius 1e-3:1e-2:4 "
@@ -66,10 +79,20 @@ const Steps& steps() {
        {"an atlas file (bounce atlas build) and --csv",
         {"bounce atlas build --model viscoelastic --A 1e-6 --materials ice-bshp96 --radius 1e-3:1e-2:4 "
          "--velocity 0.1:10:5 --tol 1e-3 -o ice.h5 && bounce atlas export ice.h5 --csv"}}},
-      {"aggregate build", {"--kind bpca|bcca, --n, --radius, --material (or --density) and -o FILE.data",
-                           {"bounce aggregate build --kind bpca --n 1000 --radius 1e-7 --material water-ice -o a.data"}}},
-      {"completion", {"", {"bounce completion > bounce.bash"}}},
+      {"aggregate build",
+       {"--kind bpca|bcca, --n, --radius, --material (or --density) and -o FILE.data",
+        {"bounce aggregate build --kind bpca --n 1000 --radius 1e-7 --material water-ice --seed 1 -o bpca.data",
+         "bounce aggregate build --kind bcca --n 1024 --radius 1e-7 --material water-ice --seed 1 -o bcca.data "
+         "--json"}}},
   };
+}
+
+const Steps& steps() {
+  static const Steps table = [] {
+    Steps all = command_steps();
+    all.merge(subcommand_steps());
+    return all;
+  }();
   return table;
 }
 

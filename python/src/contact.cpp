@@ -8,7 +8,9 @@
 
 #include <pybind11/stl.h>
 
+#include "bounce/api/resistance.hpp"
 #include "bounce/contact/law.hpp"
+#include "bounce/contact/resistance.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 #include "objects.hpp"
@@ -118,6 +120,17 @@ py::object adhesion(const PyContactLaw& l) {
 }  // namespace
 
 void bind_contact(py::module_& m) {
+  m.def(
+      "contact_resistance",
+      [](const PyPair& pair, const py::object& xi_crit) {
+        api::Inputs in = pair.inputs;
+        in["xi_crit"] = to_number("xi_crit", xi_crit);
+        return to_python(api::contact_resistance(in));
+      },
+      py::arg("pair"), py::arg("xi_crit") = contact::resistance::standard_critical_rolling,
+      "How the pair's JKR contact resists rolling, sliding and twisting, and the energy that breaks it (Dominik & "
+      "Tielens; Wada et al. 2007; docs/resistance.md): the dict of `bounce contact resistance --json`. xi_crit: the "
+      "critical rolling displacement [m], 0 < xi_crit < a0.");
   m.def(
       "contact_laws",
       [] {

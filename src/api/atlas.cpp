@@ -54,26 +54,6 @@ CommandSpec export_command() {
   return {"atlas export", "Write an atlas's grid as CSV (one row per grid point, SI units)", false, false, {}};
 }
 
-// "A" or "A,B" into material and material2 (given beside them, refused).
-Inputs with_materials(Inputs inputs) {
-  const auto it = inputs.find("materials");
-  if (it == inputs.end()) return inputs;
-  const std::string text = value_text(it->second);
-  for (const char* name : {"material", "material2"}) {
-    if (inputs.count(name)) {
-      throw InvalidArgument(name, value_text(inputs.at(name)), "not given beside --materials (which names both bodies)");
-    }
-  }
-  const auto comma = text.find(',');
-  if (text.empty() || comma == 0 || comma + 1 == text.size() || text.find(',', comma + 1) != std::string::npos) {
-    throw InvalidArgument("materials", text, "A or A,B: one or two material names");
-  }
-  inputs.erase("materials");
-  inputs.emplace("material", text.substr(0, comma));
-  if (comma != std::string::npos) inputs.emplace("material2", text.substr(comma + 1));
-  return inputs;
-}
-
 // N: the first grid's nodes (radius) or the step it sets in z (velocity); at most 1024, beyond
 // which the refinement's finest grid would be too large to build.
 detail::Points atlas_range(const Parameters& own, const char* name, const char* unit) {
@@ -110,7 +90,7 @@ analysis::AtlasRequest atlas_request(const Inputs& typed) {
                           "with --model, the materials and -o FILE.h5, e.g. `bounce atlas build --model krijt --tvis "
                           "1e-11 --materials water-ice --radius 1e-6:1e-5:4 --velocity 0.3:20:5 -o ice.h5`");
   }
-  const detail::Bound b = detail::bind_inputs(atlas_command("atlas build"), with_materials(typed));
+  const detail::Bound b = detail::bind_inputs(atlas_command("atlas build"), detail::with_materials(typed));
   analysis::AtlasRequest r;
   const detail::Points radii = atlas_range(b.own, "radius", "m");
   const detail::Points speeds = atlas_range(b.own, "velocity", "m/s");

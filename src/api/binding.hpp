@@ -44,6 +44,9 @@ std::vector<double> parse_range(const std::string& name, const std::string& text
 /// "LO:HI" with 0 < LO < HI; errors name `name`.
 std::array<double, 2> parse_interval(const std::string& name, const std::string& text);
 
+/// "materials" = "A" or "A,B" into material and material2 (given beside it, they are refused).
+Inputs with_materials(Inputs inputs);
+
 /// The commands of the front door, in the order `bounce --help` lists them (command_table.cpp).
 std::vector<CommandSpec> make_commands();
 

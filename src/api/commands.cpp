@@ -11,6 +11,7 @@
 #include "binding.hpp"
 #include "bounce/api/aggregate.hpp"
 #include "bounce/api/atlas.hpp"
+#include "bounce/api/resistance.hpp"
 #include "bounce/contact/law.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
@@ -100,6 +101,7 @@ const std::vector<CommandSpec>& commands() {
 
 const CommandSpec& command(std::string_view name) {
   if (name.starts_with("atlas ")) return atlas_command(name);  // `bounce atlas WORD`
+  if (name == "contact resistance") return resistance_command();
   if (name == "aggregate build") return aggregate_commands().front();  // `bounce aggregate build`
   return find_named(commands(), name, "command");
 }
@@ -311,6 +313,25 @@ std::array<double, 2> parse_interval(const std::string& name, const std::string&
   }
   if (!(lo > 0.0) || !(hi > lo) || !std::isfinite(hi)) throw InvalidArgument(name, text, allowed);
   return {lo, hi};
+}
+
+Inputs with_materials(Inputs inputs) {
+  const auto it = inputs.find("materials");
+  if (it == inputs.end()) return inputs;
+  const std::string text = value_text(it->second);
+  for (const char* name : {"material", "material2"}) {
+    if (inputs.count(name)) {
+      throw InvalidArgument(name, value_text(inputs.at(name)), "not given beside --materials (which names both bodies)");
+    }
+  }
+  const auto comma = text.find(',');
+  if (text.empty() || comma == 0 || comma + 1 == text.size() || text.find(',', comma + 1) != std::string::npos) {
+    throw InvalidArgument("materials", text, "A or A,B: one or two material names");
+  }
+  inputs.erase("materials");
+  inputs.emplace("material", text.substr(0, comma));
+  if (comma != std::string::npos) inputs.emplace("material2", text.substr(comma + 1));
+  return inputs;
 }
 
 }  // namespace detail

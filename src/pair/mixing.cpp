@@ -57,4 +57,13 @@ double transversal_sound_speed(double e, double nu, double density) {  // BSHP96
   return std::sqrt(e / (2.0 * density * (1.0 + nu)));
 }
 
+double shear_modulus(double youngs_modulus, double poisson_ratio) {  // isotropic elasticity
+  return youngs_modulus / (2.0 * (1.0 + poisson_ratio));
+}
+
+double effective_shear_modulus(double shear1, double poisson1, double shear2, double poisson2) {  // W07 §2.2
+  const double compliance2 = std::isinf(shear2) ? 0.0 : (2.0 - poisson2) / shear2;
+  return 1.0 / ((2.0 - poisson1) / shear1 + compliance2);
+}
+
 }  // namespace bounce

@@ -5,13 +5,14 @@
 // calls step().
 
 #include "bounce/dem/composition.hpp"
+#include "bounce/dem/resistance.hpp"
 #include "bounce/dem/tangential.hpp"
 
 namespace bounce::dem {
 
 /// The registration: a sub-model is added by its file and a row here. Its place in the list is
 /// its state's place in the flat history, before the normal law's.
-using Contact = Composition<Tangential>;
+using Contact = Composition<Tangential, Resistance>;
 
 using ContactState = Contact::State;
 using Layout = Contact::Layout;

@@ -4,6 +4,7 @@
 // on both bodies.
 
 #include <cmath>
+#include <limits>
 
 #include "bounce/dem/step_check.hpp"
 #include "bounce/models/dem_law.hpp"
@@ -25,6 +26,10 @@ struct Kinematics {
   double overlap;     ///< R_i + R_j - r (R_i - distance for a wall) [m]
   double vn;          ///< (v_i - v_j) . n [m/s]
   double sliding[3];  ///< the contact points' relative velocity in the tangent plane [m/s]
+  const double* omega1 = nullptr;  ///< body 1's angular velocity [rad/s]
+  const double* omega2 = nullptr;  ///< body 2's (nullptr: a wall, which does not turn)
+  double radius1 = 0.0, radius2 = 0.0;  ///< [m] (radius2 = inf: a wall)
+  double distance = 0.0;                ///< between the centres [m] (0 for a wall)
 };
 
 
@@ -45,9 +50,18 @@ struct ContactForce {
   double bulk_dissipated = 0.0;
   double elastic = 0.0;
   double surface = 0.0;
+  /// Torques beyond the tangential force's lever arm (rolling, twisting, and the exact torques of
+  /// W07's sliding spring) [N m].
+  double torque1[3] = {0.0, 0.0, 0.0};
+  double torque2[3] = {0.0, 0.0, 0.0};
+  /// The rolling, sliding and twisting springs' energy at this step, and what each released in it
+  /// by moving beyond its critical displacement [J].
+  double spring_energy = 0.0;
+  double rolling_dissipated = 0.0, sliding_dissipated = 0.0, twisting_dissipated = 0.0;
   bool finite() const {
-    return std::isfinite(normal) && std::isfinite(tangential[0]) && std::isfinite(tangential[1]) &&
-           std::isfinite(tangential[2]);
+    bool all = std::isfinite(normal);
+    for (int d = 0; d < 3; d++) all = all && std::isfinite(tangential[d]) && std::isfinite(torque1[d]) && std::isfinite(torque2[d]);
+    return all;
   }
 };
 
@@ -68,8 +82,8 @@ inline bool within_reach(const models::DemModel& law, const models::ContactGeome
   return overlap > law.snap_overlap(g);
 }
 
-/// The force on body 1 (body 2 takes -force) and the torques on both, the lever arm being each
-/// radius (as in BSHP96's (10)).
+/// The force on body 1 (body 2 takes -force) and the torques on both: the tangential force's, the
+/// lever arm being each radius (as in BSHP96's (10)), plus the contact's own torques.
 struct Loads {
   double force[3];
   double torque1[3];
@@ -90,6 +104,7 @@ inline Kinematics pair_kinematics(const Motion& i, const Motion& j, double r) {
   k.sliding[0] = vr[0] - k.vn * k.n[0] - (k.n[2] * wr[1] - k.n[1] * wr[2]);
   k.sliding[1] = vr[1] - k.vn * k.n[1] - (k.n[0] * wr[2] - k.n[2] * wr[0]);
   k.sliding[2] = vr[2] - k.vn * k.n[2] - (k.n[1] * wr[0] - k.n[0] * wr[1]);
+  k.omega1 = i.omega, k.omega2 = j.omega, k.radius1 = i.radius, k.radius2 = j.radius, k.distance = r;
   return k;
 }
 
@@ -106,6 +121,7 @@ inline Kinematics wall_kinematics(const Motion& i, int axis, double sign, double
                           -r * (o[0] * k.n[1] - o[1] * k.n[0])};
   for (int d = 0; d < 3; d++) k.sliding[d] = v[d] + spin[d];
   k.sliding[axis] = 0.0;
+  k.omega1 = o, k.radius1 = r, k.radius2 = std::numeric_limits<double>::infinity();
   return k;
 }
 
@@ -117,8 +133,8 @@ inline Loads loads(const ContactForce& c, const Kinematics& k, double radius1, d
   const double arm[3] = {k.n[1] * ft[2] - k.n[2] * ft[1], k.n[2] * ft[0] - k.n[0] * ft[2],
                          k.n[0] * ft[1] - k.n[1] * ft[0]};
   for (int d = 0; d < 3; d++) {
-    l.torque1[d] = -(radius1 * arm[d]);
-    l.torque2[d] = -(radius2 * arm[d]);
+    l.torque1[d] = -(radius1 * arm[d]) + c.torque1[d];
+    l.torque2[d] = -(radius2 * arm[d]) + c.torque2[d];
   }
   return l;
 }

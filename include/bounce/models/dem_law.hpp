@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 
+#include "bounce/contact/resistance.hpp"
 #include "bounce/models/end_rule.hpp"
 #include "bounce/models/tangential.hpp"
 
@@ -102,6 +103,15 @@ class DemCrackLaw {
   virtual double release_overlap(const ContactGeometry& g) const = 0;
 };
 
+/// Rolling, sliding and twisting of the contact (Dominik & Tielens, W07; contact/resistance.hpp,
+/// docs/resistance.md), each turned on by itself: springs on the contact pointers and twist, with
+/// constants from each contact's R_eff.
+struct ResistanceModel {
+  contact::resistance::Materials materials;
+  double xi_crit = contact::resistance::standard_critical_rolling;  ///< [m]
+  bool rolling = false, sliding = false, twisting = false;
+};
+
 /// A model as a DEM contact law for one pair of materials (models::make_dem_model): its
 /// normal law is `normal`, or `crack` for a law with a contact radius of its own (krijt).
 struct DemModel {
@@ -116,6 +126,7 @@ struct DemModel {
   double snap_overlap(const ContactGeometry& g) const { return crack ? 0.0 : normal->snap_overlap(g); }
   EndRule end_rule = EndRule::overlap;         ///< force: the force is never attractive
   std::optional<TangentialModel> tangential;   ///< with a friction coefficient
+  std::optional<ResistanceModel> resistance;   ///< with rolling, sliding or twisting
 };
 
 }  // namespace bounce::models

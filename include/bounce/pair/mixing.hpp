@@ -36,6 +36,14 @@ double sphere_mass(double radius, double density);
 double tangential_mass_factor(double mass1, double inertia_factor1, double mass2,
                               double inertia_factor2);
 
+/// G = E / (2 (1 + nu)), the shear modulus of an isotropic solid; E = inf (rigid): inf.
+double shear_modulus(double youngs_modulus, double poisson_ratio);
+
+/// Mindlin's tangential modulus G*: 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, so that a circular
+/// contact of radius a has the tangential stiffness 8 a G* (W07 §2.2); rigid body 2
+/// (G2 = inf): G1/(2 - nu1).
+double effective_shear_modulus(double shear1, double poisson1, double shear2, double poisson2);
+
 /// BSHP96 (B3): transversal speed of sound c_t = sqrt(E / (2 rho (1 + nu))) [m/s].
 double transversal_sound_speed(double youngs_modulus, double poisson_ratio, double density);
 

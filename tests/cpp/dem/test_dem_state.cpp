@@ -94,7 +94,8 @@ TEST(DemState, OtherBodyViewGivesEqualAndOppositeLoads) {
 }
 
 // A layout holds the states its laws use, in SubStates' order: the spring and the normal state
-// for every law (5 values, as restart files have had them), krijt's crack besides (13).
+// for every law (5 values, as restart files have had them), krijt's crack besides (13), and the
+// rolling, sliding and twisting pointers (7) where a law has them (20 at most).
 TEST(DemState, LayoutHoldsWhatItsLawsUse) {
   dem::Layout plain;
   plain.add(api::dem_model({{"model", std::string("hertz")}, {"E", 1e9}, {"nu", 0.3}}));
@@ -102,7 +103,7 @@ TEST(DemState, LayoutHoldsWhatItsLawsUse) {
   dem::Layout both = plain;
   both.add(krijt_with_friction());
   EXPECT_EQ(both.size(), 13);
-  EXPECT_EQ(dem::Layout::largest, 13);
+  EXPECT_EQ(dem::Layout::largest, 20);
   dem::ContactState s;
   s.get<dem::Tangential::State>().spring = {1, 2, 3};
   s.get<dem::NormalState>() = {4, 5};
@@ -114,6 +115,18 @@ TEST(DemState, LayoutHoldsWhatItsLawsUse) {
   plain.write(s, short_flat.data());
   EXPECT_EQ(short_flat, (std::vector<double>{1, 2, 3, 4, 5}));
   EXPECT_EQ(plain.read(true, short_flat.data()).get<dem::CrackStepState>().crack.contact_radius, 0.0);
+  models::DemModel rolling = krijt_with_friction();
+  rolling.resistance = models::ResistanceModel{{}, 8e-10, true, false, false};
+  dem::Layout all;
+  all.add(rolling);
+  EXPECT_EQ(all.size(), 20);
+  s.get<dem::Resistance::State>() = {{14, 15, 16}, {17, 18, 19}, 20};
+  std::vector<double> whole(20);
+  all.write(s, whole.data());
+  EXPECT_EQ(whole, (std::vector<double>{1, 2, 3, 14, 15, 16, 17, 18, 19, 20, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13}));
+  const dem::ContactState back = all.read(true, whole.data());
+  EXPECT_EQ(back.get<dem::Resistance::State>().pointer2[2], 19.0);
+  EXPECT_EQ(back.get<dem::Resistance::State>().twist, 20.0);
 }
 
 // Hertz's stiffness dF/dxi = 2 E* sqrt(R xi) (from F = (4/3) E* sqrt(R) xi^{3/2}) and the

@@ -43,8 +43,9 @@ class TwoSpheres {
   const Sphere& sphere(int k) const { return s_[k]; }
   typename Contact::State& state() { return state_; }
   const typename Contact::Layout& layout() const { return layout_; }
-  /// The energies of the contact: stored at the last step (elastic + surface), and the crack's and
-  /// the bulk force's dissipation summed over the steps [J].
+  /// The energies of the contact: stored at the last step (a crack law's elastic + surface, and the
+  /// rolling, sliding and twisting springs'), and what the crack, the bulk force and those springs
+  /// dissipated, summed over the steps [J].
   double stored() const { return stored_; }
   double dissipated() const { return dissipated_; }
   double kinetic() const {
@@ -88,8 +89,9 @@ class TwoSpheres {
       s_[0].f[d] += l.force[d], s_[1].f[d] -= l.force[d];
       s_[0].torque[d] += l.torque1[d], s_[1].torque[d] += l.torque2[d];
     }
-    stored_ = c.elastic + c.surface;
-    dissipated_ += c.crack_dissipated + c.bulk_dissipated;
+    stored_ = c.elastic + c.surface + c.spring_energy;
+    dissipated_ += c.crack_dissipated + c.bulk_dissipated + c.rolling_dissipated + c.sliding_dissipated +
+                   c.twisting_dissipated;
   }
 
   const models::DemModel& law_;
