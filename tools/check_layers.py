@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Fails on any #include that runs up bounce's layer order (docs/architecture.md).
 
-    core -> pair -> contact -> models -> dynamics -> dem -> analytic -> analysis -> api -> (apps | python | lammps | explorer)
+    core -> pair -> contact -> models -> dynamics -> dem -> analytic -> analysis -> aggregate -> api -> (apps | python | lammps | explorer)
 
 A file belongs to the layer of its folder: include/bounce/<layer>/, src/<layer>/, apps/bounce
 (the CLI), python/src (the bindings) or explorer/src (the browser's binding). Every `#include "..."` and `#include <bounce/...>` is
@@ -18,7 +18,7 @@ import os
 import re
 import sys
 
-ORDER = ["core", "pair", "contact", "models", "dynamics", "dem", "analytic", "analysis", "api"]
+ORDER = ["core", "pair", "contact", "models", "dynamics", "dem", "analytic", "analysis", "aggregate", "api"]
 FRONT_ENDS = {"apps": "apps/bounce", "python": "python/src", "lammps": "lammps", "explorer": "explorer/src"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+(?:"([^"]+)"|<(bounce/[^>]+)>)', re.M)
 

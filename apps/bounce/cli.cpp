@@ -17,6 +17,7 @@
 
 #include "bounce/core/suggest.hpp"
 #include "bounce/core/version.hpp"
+#include "aggregate.hpp"
 #include "atlas.hpp"
 #include "commands.hpp"
 #include "completion.hpp"
@@ -227,6 +228,8 @@ int run(int argc, const char* const* argv) {
   for (Command& c : add_atlas_commands(app)) commands.push_back(std::move(c));
   commands.push_back(add_resistance_command(*app.get_subcommand("contact")));
   names.push_back("atlas");
+  for (Command& c : add_aggregate_commands(app)) commands.push_back(std::move(c));
+  names.push_back("aggregate");
   const CLI::App* completion = add_completion_command(app);
   names.push_back(completion->get_name());
   if (argc <= 1) {  // `bounce` alone introduces itself: what it is and its commands

@@ -58,7 +58,7 @@ Steps command_steps() {
   };
 }
 
-// The commands of two words: `contact resistance`, `atlas build` and its kin.
+// The commands of two words: `contact resistance`, `atlas build` and its kin, `aggregate build`.
 Steps subcommand_steps() {
   return {
       {"contact resistance",
@@ -79,6 +79,11 @@ Steps subcommand_steps() {
        {"an atlas file (bounce atlas build) and --csv",
         {"bounce atlas build --model viscoelastic --A 1e-6 --materials ice-bshp96 --radius 1e-3:1e-2:4 "
          "--velocity 0.1:10:5 --tol 1e-3 -o ice.h5 && bounce atlas export ice.h5 --csv"}}},
+      {"aggregate build",
+       {"--kind bpca|bcca, --n, --radius, --material (or --density) and -o FILE.data",
+        {"bounce aggregate build --kind bpca --n 1000 --radius 1e-7 --material water-ice --seed 1 -o bpca.data",
+         "bounce aggregate build --kind bcca --n 1024 --radius 1e-7 --material water-ice --seed 1 -o bcca.data "
+         "--json"}}},
   };
 }
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include "bounce/api/aggregate.hpp"
 #include "bounce/core/checks.hpp"
 #include "bounce/core/error.hpp"
 
@@ -80,6 +81,9 @@ const std::map<std::string, ParameterSpec, std::less<>>& declared() {
     auto* out = new std::map<std::string, ParameterSpec, std::less<>>;
     for (const api::CommandSpec& c : api::commands()) {
       for (ParameterSpec& s : api::offered_parameters(c.name)) out->try_emplace(s.name, std::move(s));
+    }
+    for (const api::CommandSpec& c : api::aggregate_commands()) {
+      for (const ParameterSpec& s : c.parameters) out->try_emplace(s.name, s);
     }
     out->try_emplace("model", api::model_parameter());
     out->try_emplace("law", api::law_parameter());

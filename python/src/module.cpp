@@ -53,6 +53,7 @@ PYBIND11_MODULE(_bounce, m) {
   python::bind_analytic(m);
   python::bind_tables(m);
   python::bind_atlas(m);
+  python::bind_aggregate(m);
   python::bind_rules(m);
   python::bind_fit(m);
   python::bind_posterior(m);

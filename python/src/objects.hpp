@@ -38,6 +38,7 @@ void bind_contact(py::module_& m);      // ContactLaw, contact_laws
 void bind_analytic(py::module_& m);     // master_cor, cor_series, cor_pade
 void bind_tables(py::module_& m);       // NormalTable, TangentialTable
 void bind_atlas(py::module_& m);       // Atlas, open_atlas
+void bind_aggregate(py::module_& m);    // build_aggregate
 void bind_rules(py::module_& m);        // apply_restitution, collide_grains
 void bind_fit(py::module_& m);          // fit
 void bind_posterior(py::module_& m);    // Likelihood, _likelihood (bounce.posterior)

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "binding.hpp"
+#include "bounce/api/aggregate.hpp"
 #include "bounce/api/atlas.hpp"
 #include "bounce/api/resistance.hpp"
 #include "bounce/contact/law.hpp"
@@ -101,6 +102,7 @@ const std::vector<CommandSpec>& commands() {
 const CommandSpec& command(std::string_view name) {
   if (name.starts_with("atlas ")) return atlas_command(name);  // `bounce atlas WORD`
   if (name == "contact resistance") return resistance_command();
+  if (name == "aggregate build") return aggregate_commands().front();  // `bounce aggregate build`
   return find_named(commands(), name, "command");
 }
 

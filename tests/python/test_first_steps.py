@@ -12,7 +12,7 @@ import pytest
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 CLI = os.path.abspath(os.environ.get("BOUNCE_CLI", os.path.join(ROOT, "build", "bin", "bounce")))
 COMMANDS = ["materials", "models", "contact", "collide", "curve", "analytic", "sticking", "rules", "table", "fit",
-            "lammps", "atlas build", "atlas query", "atlas export", "completion"]
+            "lammps", "atlas build", "atlas query", "atlas export", "aggregate build", "completion"]
 
 
 def run(*args):
@@ -63,7 +63,7 @@ def test_misspelt_command_is_refused_even_with_help():
         assert done.returncode == 2 and done.stdout == "" and done.stderr.strip().endswith("did you mean collide?")
 
 
-@pytest.mark.parametrize("command", ["collide", "curve", "sticking", "table", "fit", "atlas query"])
+@pytest.mark.parametrize("command", ["collide", "curve", "sticking", "table", "fit", "atlas query", "aggregate build"])
 def test_a_command_alone_says_what_it_needs(command, tmp_path):
     """main: `bounce collide` alone said `--E = (not given)`; now the needs and an example that runs."""
     done = run(*command.split())
