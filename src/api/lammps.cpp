@@ -99,7 +99,7 @@ void add_resistance(models::DemModel& law, const Pair& pair, const Parameters& o
     throw InvalidArgument("sliding", "yes", "no beside friction: W07's sliding spring is the contact's tangential force "
                                             "(give friction or sliding yes, not both)");
   }
-  law.resistance = models::ResistanceModel{contact::resistance::materials_of(pair), *own.real("xi_crit"), rolling,
+  law.resistance = models::ResistanceModel{contact::resistance::materials_of(pair, first), *own.real("xi_crit"), rolling,
                                            sliding, twisting};
 }
 

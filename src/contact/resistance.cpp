@@ -29,7 +29,7 @@ double break_energy_factor() {
   return cbrt6 * (p(1.0) - p(1.0 / (cbrt6 * cbrt6)));
 }
 
-Materials materials_of(const Pair& pair) {
+Materials materials_of(const Pair& pair, const std::string& who) {
   const Material& m1 = pair.body1().material;
   const Material& m2 = pair.body2().material;
   const double g1 = shear_modulus(m1.youngs_modulus, m1.poisson_ratio);
@@ -38,7 +38,7 @@ Materials materials_of(const Pair& pair) {
   // docs/resistance.md, unlike pairs: the twisting spring takes the moduli in series (G for like
   // bodies, 2 G1 on a rigid wall), the limits the weaker body's strength.
   const double series = std::isinf(g2) ? 2.0 * g1 : 2.0 * g1 * g2 / (g1 + g2);
-  return {pair.effective_modulus(), pair.require_surface_energy("contact resistance"),
+  return {pair.effective_modulus(), pair.require_surface_energy(who),
           effective_shear_modulus(g1, m1.poisson_ratio, g2, m2.poisson_ratio), series, std::min(g1, g2)};
 }
 

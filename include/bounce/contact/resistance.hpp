@@ -5,6 +5,8 @@
 // surface; bounce's gamma is the work of adhesion, 2 gamma_s for like surfaces, so every
 // formula here takes gamma_s = gamma / 2.
 
+#include <string>
+
 #include "bounce/pair/pair.hpp"
 
 namespace bounce::contact::resistance {
@@ -43,8 +45,9 @@ struct Materials {
   double weaker_shear = 0.0;        ///< min(G1, G2), the sliding and twisting limits' [Pa]
 };
 
-/// The pair's Materials; InvalidArgument naming "gamma" where a material has no work of adhesion.
-Materials materials_of(const Pair& pair);
+/// The pair's Materials; InvalidArgument naming "gamma", and `who` as what needs it, where a
+/// material has no work of adhesion.
+Materials materials_of(const Pair& pair, const std::string& who = "contact resistance");
 
 /// The contact of `pair` (spheres or a sphere on a wall; both materials with a work of adhesion)
 /// with critical rolling displacement `xi_crit` [m], 0 < xi_crit < a0. Throws InvalidArgument
