@@ -261,6 +261,26 @@ run {steps}
 """
 
 
+def restart_and_continue(first, steps, cores, work):
+    """`first` (a script that sets up and runs), then `write_restart, run steps` in the same process,
+    and `read_restart, run steps` in a second one given only the plugin, neighbor settings and the
+    integrator: the two final states ({id: (x, y, z, vx, vy, vz)}) and the two processes' logs."""
+    dump = "write_dump all custom {} id x y z vx vy vz modify sort id format float %.17g"
+    log = run_in(work, first + f"\nwrite_restart gas.restart\nrun {steps}\n{dump.format('one.dump')}\n", cores,
+                 "in.first")
+    second = f"""
+plugin load {PLUGIN}
+read_restart gas.restart
+neighbor 2e-4 bin
+neigh_modify delay 0 every 1 check yes
+fix 1 all nve/sphere
+run {steps}
+{dump.format('two.dump')}
+"""
+    log2 = run_in(work, second, cores, "in.second")
+    return read_dump(os.path.join(work, "one.dump")), read_dump(os.path.join(work, "two.dump")), log, log2
+
+
 def thermo_rows(output):
     """(step, value, ...) rows of the thermo table(s) LAMMPS printed."""
     rows, reading = [], False

@@ -89,24 +89,8 @@ def restarted(cores, work):
     process, `read_restart, run` in a second; the springs' energy at the restart."""
     first = L.gas_script(GAS, cells=10, phi=0.2, dt=3e-6, steps=STEPS, thermo=STEPS, skin=2e-4,
                          extra="compute bp all pair bounce\nthermo_style custom step c_ke c_bp[8]")
-    first += f"""
-write_restart gas.restart
-run {STEPS}
-write_dump all custom one.dump id x y z vx vy vz modify sort id format float %.17g
-"""
-    log = L.run_in(work, first, cores, "in.first")
-    second = f"""
-plugin load {L.PLUGIN}
-read_restart gas.restart
-neighbor 2e-4 bin
-neigh_modify delay 0 every 1 check yes
-fix 1 all nve/sphere
-run {STEPS}
-write_dump all custom two.dump id x y z vx vy vz modify sort id format float %.17g
-"""
-    L.run_in(work, second, cores, "in.second")
-    springs = L.thermo_rows(log)[1][2]
-    return L.read_dump(os.path.join(work, "one.dump")), L.read_dump(os.path.join(work, "two.dump")), springs
+    one, two, log, _ = L.restart_and_continue(first, STEPS, cores, work)
+    return one, two, L.thermo_rows(log)[1][2]
 
 
 @pytest.mark.parametrize("cores", [1, 2])

@@ -18,23 +18,8 @@ def continued(cores, work):
     """`run 3000, write_restart, run 3000` in one process; `read_restart, run 3000` in a second,
     given only the plugin, neighbor settings and the integrator (no pair_style, no pair_coeff)."""
     first = L.gas_script(COEFF, cells=12, phi=0.1, dt=3e-6, steps=STEPS, thermo=STEPS, skin=2e-4)
-    first += f"""
-write_restart gas.restart
-run {STEPS}
-write_dump all custom one.dump id x y z vx vy vz modify sort id format float %.17g
-"""
-    L.run_in(work, first, cores, "in.first")
-    second = f"""
-plugin load {L.PLUGIN}
-read_restart gas.restart
-neighbor 2e-4 bin
-neigh_modify delay 0 every 1 check yes
-fix 1 all nve/sphere
-run {STEPS}
-write_dump all custom two.dump id x y z vx vy vz modify sort id format float %.17g
-"""
-    log = L.run_in(work, second, cores, "in.second")
-    return L.read_dump(os.path.join(work, "one.dump")), L.read_dump(os.path.join(work, "two.dump")), log
+    one, two, _, log = L.restart_and_continue(first, STEPS, cores, work)
+    return one, two, log
 
 
 @pytest.mark.parametrize("cores", [1, 2])
