@@ -156,6 +156,7 @@ class Atlas {
   std::vector<double> x_weight_scale_;     ///< per stencil start: 1 / prod_{b != a} (x_a - x_b), a = 0..3
   void prepare_x(const std::function<void(const std::string&)>& bad);
   void locate(double ln_r, double ln_rho, Stencil& s) const noexcept;
+  double stick_weight(const Stencil& s) const noexcept;
   double v_stick_at(const Stencil& s, double ln_r, double ln_rho) const noexcept;
   double field_at(const Stencil& s, AtlasField f, double zq) const noexcept;
   double cor_above(const Stencil& s, double gap, double velocity) const noexcept;

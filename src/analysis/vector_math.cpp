@@ -1,0 +1,81 @@
+// The vector logarithms and exponentials of vector_math.hpp: glibc's libmvec on x86-64 (AVX2
+// four at a time where the machine has it, SSE2 two at a time otherwise), std:: elsewhere.
+#include "vector_math.hpp"
+
+#include <cmath>
+
+#if defined(__x86_64__) && defined(__GLIBC__)
+#include <immintrin.h>
+
+// libmvec's entry points, named by the x86-64 vector function ABI (b: SSE2, d: AVX2; N2/N4 lanes).
+extern "C" __m128d _ZGVbN2v_log(__m128d);
+extern "C" __m128d _ZGVbN2v_exp(__m128d);
+extern "C" __m256d _ZGVdN4v_log(__m256d);
+extern "C" __m256d _ZGVdN4v_exp(__m256d);
+
+namespace bounce::analysis {
+namespace {
+
+const bool has_avx2 = __builtin_cpu_supports("avx2") != 0;
+
+[[gnu::target("avx2")]] std::size_t log4(double* x, std::size_t n) noexcept {
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) _mm256_storeu_pd(x + i, _ZGVdN4v_log(_mm256_loadu_pd(x + i)));
+  return i;
+}
+[[gnu::target("avx2")]] std::size_t exp4(double* x, std::size_t n) noexcept {
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) _mm256_storeu_pd(x + i, _ZGVdN4v_exp(_mm256_loadu_pd(x + i)));
+  return i;
+}
+std::size_t log2(double* x, std::size_t n) noexcept {
+  std::size_t i = 0;
+  for (; i + 2 <= n; i += 2) _mm_storeu_pd(x + i, _ZGVbN2v_log(_mm_loadu_pd(x + i)));
+  return i;
+}
+std::size_t exp2(double* x, std::size_t n) noexcept {
+  std::size_t i = 0;
+  for (; i + 2 <= n; i += 2) _mm_storeu_pd(x + i, _ZGVbN2v_exp(_mm_loadu_pd(x + i)));
+  return i;
+}
+
+}  // namespace
+
+void vector_log(double* x, std::size_t n) noexcept {
+  // The last one or few (n not a multiple of the lanes) by libmvec too, padded, so that a value's
+  // logarithm does not depend on where it stands in the array.
+  std::size_t i = has_avx2 ? log4(x, n) : log2(x, n);
+  if (i < n) {
+    double tail[4] = {1.0, 1.0, 1.0, 1.0};
+    for (std::size_t k = i; k < n; ++k) tail[k - i] = x[k];
+    has_avx2 ? log4(tail, 4) : log2(tail, 4);
+    for (std::size_t k = i; k < n; ++k) x[k] = tail[k - i];
+  }
+}
+
+void vector_exp(double* x, std::size_t n) noexcept {
+  std::size_t i = has_avx2 ? exp4(x, n) : exp2(x, n);
+  if (i < n) {
+    double tail[4] = {0.0, 0.0, 0.0, 0.0};
+    for (std::size_t k = i; k < n; ++k) tail[k - i] = x[k];
+    has_avx2 ? exp4(tail, 4) : exp2(tail, 4);
+    for (std::size_t k = i; k < n; ++k) x[k] = tail[k - i];
+  }
+}
+
+}  // namespace bounce::analysis
+
+#else
+
+namespace bounce::analysis {
+
+void vector_log(double* x, std::size_t n) noexcept {
+  for (std::size_t i = 0; i < n; ++i) x[i] = std::log(x[i]);
+}
+void vector_exp(double* x, std::size_t n) noexcept {
+  for (std::size_t i = 0; i < n; ++i) x[i] = std::exp(x[i]);
+}
+
+}  // namespace bounce::analysis
+
+#endif
