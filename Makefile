@@ -31,6 +31,9 @@
 #                    (~7 min; out/figures/hcs-cooling, out/hcs/results.json) and the aggregation of
 #                    sticky ice grains with K13's law against elastic JKR (~2 min;
 #                    out/figures/aggregation, out/aggregation/results.json)
+#   make aggregate-collisions  opt-in, on 2 MPI ranks: two BPCA aggregates of 1000 ice monomers
+#                    collide head-on at 10 speeds, set against DT97's and W07's energies (~6 min;
+#                    out/figures/aggregate_collisions.png, out/aggregate_collisions/results.json)
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
@@ -55,7 +58,7 @@ SANITIZE_ENV := ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:detect_stack_use_aft
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 .PHONY: all build deps deps-sanitize configure test demo bench check-long check-posterior lint clean \
-        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip check-debian13 \
+        build-sanitize test-sanitize fuzz lammps lammps-demo package check-package check-pip check-debian13 aggregate-collisions \
         deps-explorer deps-browser explorer explore
 
 all: build
@@ -153,6 +156,9 @@ explore: explorer
 lammps-demo: lammps
 	$(PYTHON) tools/hcs.py --build $(BUILD_DIR) --out out
 	$(PYTHON) tools/aggregation.py --build $(BUILD_DIR) --out out
+
+aggregate-collisions: lammps
+	$(PYTHON) tools/aggregate_collision.py --build $(BUILD_DIR) --out out
 
 demo: deps
 	@$(MAKE) --no-print-directory build
