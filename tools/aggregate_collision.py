@@ -168,6 +168,7 @@ timestep {DT!r}
 fix 1 all nve/sphere
 compute e all pair bounce
 fix quench all viscous {drag!r}
+thermo_style custom step ke c_e[5] c_e[6] c_e[7]
 thermo {QUENCH}
 run {QUENCH}
 unfix quench
@@ -175,7 +176,7 @@ write_dump all custom start.dump id x y z modify sort id format float %.17g
 velocity a set {speed / 2!r} 0 0
 velocity b set {-speed / 2!r} 0 0
 set group all omega 0 0 0
-variable rolled equal c_e[5]-$(c_e[5])
+variable rolled equal c_e[5]-$(c_e[5])  # current: the quench's last thermo line computed it
 variable slid equal c_e[6]-$(c_e[6])
 variable twisted equal c_e[7]-$(c_e[7])
 compute rot all erotate/sphere
