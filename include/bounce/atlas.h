@@ -25,8 +25,10 @@ void bounce_atlas_close(bounce_atlas *atlas);
 
 /* eps in [0, 1] (0 where the grains stick); NaN outside the atlas. */
 double bounce_atlas_cor(const bounce_atlas *atlas, double r1, double r2, double v);
-/* eps at n points at once (out[i] as bounce_atlas_cor(r1[i], r2[i], v[i])): faster per point,
- * the points' independent work overlapping. */
+/* eps at n points at once: faster per point, the points' independent work overlapping, with
+ * vector logarithms (out[i] is bounce_atlas_cor(r1[i], r2[i], v[i]) within 1e-13; stick or
+ * bounce may differ only within that width of v_stick: docs/atlas.md). out may be one of the
+ * inputs. */
 void bounce_atlas_cor_n(const bounce_atlas *atlas, size_t n, const double *r1, const double *r2, const double *v,
                         double *out);
 /* 1 stick, 0 bounce, -1 outside the atlas. */

@@ -29,7 +29,7 @@ std::size_t cell_of(double u, std::size_t n) noexcept {
   return std::min(i, n - 2);
 }
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__)  // ifunc
 #define BOUNCE_BATCH_CLONES [[gnu::target_clones("arch=x86-64-v3", "default")]]
 #else
 #define BOUNCE_BATCH_CLONES
@@ -146,9 +146,12 @@ void Atlas::prepare_x(const std::function<void(const std::string&)>& bad) {
 [[gnu::always_inline]] inline void Atlas::locate(double ln_r, double ln_rho, Stencil& s) const noexcept {
   const double ux = (ln_r - x.start) * inverse_step_[0], uy = (ln_rho - y.start) * inverse_step_[1];
   std::size_t i = x_cell_[std::min(static_cast<std::size_t>(std::max(ux, 0.0)), x_cell_.size() - 1)];
-  // A bin is as wide as the narrowest cell, so the point lies in its cell or the next: one step,
-  // taken without a branch (which random points would mispredict).
-  i += static_cast<std::size_t>((i + 2 < x.count) & (ln_r >= x.nodes[std::min(i + 1, x.count - 1)]));
+  // A bin is as wide as the narrowest cell, so the point lies in its cell or one of the next two
+  // (one, but for round-off in the bin's index): two steps, taken without a branch (which random
+  // points would mispredict).
+  for (int step = 0; step < 2; ++step) {
+    i += static_cast<std::size_t>((i + 2 < x.count) & (ln_r >= x.nodes[std::min(i + 1, x.count - 1)]));
+  }
   const std::size_t j = cell_of(uy, y.count);
   s.bx = std::min(i > 0 ? i - 1 : 0, x.count - 4);
   s.by = std::min(j > 0 ? j - 1 : 0, y.count - 4);
@@ -319,6 +322,7 @@ BOUNCE_BATCH_CLONES void Atlas::cor_many(std::size_t n, const double* radius1, c
   double ln_r[block], ln_rho[block], speed[block], ref[block], gap[block], ln_gap[block];
   Stencil s[block];
   std::uint8_t list[block];
+  static_assert(block <= 256, "list holds indices in a block as bytes");
   for (std::size_t first = 0; first < n; first += block) {
     const std::size_t m = std::min(block, n - first);
     for (std::size_t i = 0; i < m; ++i) {  // R_eff and rho_eff (inputs read here: out may alias them)
@@ -338,7 +342,7 @@ BOUNCE_BATCH_CLONES void Atlas::cor_many(std::size_t n, const double* radius1, c
       ln_rho[i] = std::clamp(ln_rho[i], y.start, y.end());
       locate(ln_r[i], ln_rho[i], s[i]);
       gap[i] = can_stick ? stick_weight(s[i]) : 0.0;
-      ref[i] = ln_v_reference - 5.0 / 6.0 * ln_r[i] - 0.5 * ln_rho[i];
+      ref[i] = ln_reference_velocity(ln_r[i], ln_rho[i]);
     }
     vector_exp(ref, m);
     std::size_t bouncing = 0;  // the points with gap > 0 are listed, so that eps runs without a branch

@@ -4,19 +4,25 @@
 
 #include <cmath>
 
-#if defined(__x86_64__) && defined(__GLIBC__)
+#if defined(BOUNCE_HAVE_MVEC) && defined(__x86_64__)  // the build found libmvec (src/CMakeLists.txt)
 #include <immintrin.h>
 
 // libmvec's entry points, named by the x86-64 vector function ABI (b: SSE2, d: AVX2; N2/N4 lanes).
 extern "C" __m128d _ZGVbN2v_log(__m128d);
 extern "C" __m128d _ZGVbN2v_exp(__m128d);
-extern "C" __m256d _ZGVdN4v_log(__m256d);
-extern "C" __m256d _ZGVdN4v_exp(__m256d);
+extern "C" [[gnu::target("avx2")]] __m256d _ZGVdN4v_log(__m256d);  // AVX2's calling convention
+extern "C" [[gnu::target("avx2")]] __m256d _ZGVdN4v_exp(__m256d);
 
 namespace bounce::analysis {
 namespace {
 
-const bool has_avx2 = __builtin_cpu_supports("avx2") != 0;
+bool machine_has_avx2() noexcept {
+  static const bool avx2 = [] {
+    __builtin_cpu_init();  // GCC's rule for code that may run before the library's constructors
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return avx2;
+}
 
 [[gnu::target("avx2")]] std::size_t log4(double* x, std::size_t n) noexcept {
   std::size_t i = 0;
@@ -44,21 +50,21 @@ std::size_t exp2(double* x, std::size_t n) noexcept {
 void vector_log(double* x, std::size_t n) noexcept {
   // The last one or few (n not a multiple of the lanes) by libmvec too, padded, so that a value's
   // logarithm does not depend on where it stands in the array.
-  std::size_t i = has_avx2 ? log4(x, n) : log2(x, n);
+  std::size_t i = machine_has_avx2() ? log4(x, n) : log2(x, n);
   if (i < n) {
     double tail[4] = {1.0, 1.0, 1.0, 1.0};
     for (std::size_t k = i; k < n; ++k) tail[k - i] = x[k];
-    has_avx2 ? log4(tail, 4) : log2(tail, 4);
+    machine_has_avx2() ? log4(tail, 4) : log2(tail, 4);
     for (std::size_t k = i; k < n; ++k) x[k] = tail[k - i];
   }
 }
 
 void vector_exp(double* x, std::size_t n) noexcept {
-  std::size_t i = has_avx2 ? exp4(x, n) : exp2(x, n);
+  std::size_t i = machine_has_avx2() ? exp4(x, n) : exp2(x, n);
   if (i < n) {
     double tail[4] = {0.0, 0.0, 0.0, 0.0};
     for (std::size_t k = i; k < n; ++k) tail[k - i] = x[k];
-    has_avx2 ? exp4(tail, 4) : exp2(tail, 4);
+    machine_has_avx2() ? exp4(tail, 4) : exp2(tail, 4);
     for (std::size_t k = i; k < n; ++k) x[k] = tail[k - i];
   }
 }

@@ -130,10 +130,12 @@ class Atlas {
   int sticks_unchecked(double radius1, double radius2, double velocity) const noexcept;  ///< 1, 0, -1 outside
 
   std::size_t points() const { return x.count * y.count * z.count; }
-  /// v_ref at (ln R_eff, ln rho_eff) [m/s].
-  double reference_velocity(double ln_r, double ln_rho) const {
-    return std::exp(ln_v_reference - 5.0 / 6.0 * ln_r - 0.5 * ln_rho);
+  /// ln v_ref at (ln R_eff, ln rho_eff): v_ref scales like JKR's sticking velocity, K13 (25).
+  double ln_reference_velocity(double ln_r, double ln_rho) const noexcept {
+    return ln_v_reference - 5.0 / 6.0 * ln_r - 0.5 * ln_rho;
   }
+  /// v_ref at (ln R_eff, ln rho_eff) [m/s].
+  double reference_velocity(double ln_r, double ln_rho) const { return std::exp(ln_reference_velocity(ln_r, ln_rho)); }
   /// v_s at a node (+inf where w <= 0).
   double node_v_stick(std::size_t ix, std::size_t iy) const;
   double value(AtlasField f, std::size_t ix, std::size_t iy, std::size_t iz) const {
