@@ -32,7 +32,7 @@
 #                    sticky ice grains with K13's law against elastic JKR (~2 min;
 #                    out/figures/aggregation, out/aggregation/results.json)
 #   make aggregate-collisions  opt-in, on 2 MPI ranks: two BPCA aggregates of 1000 ice monomers
-#                    collide head-on at 10 speeds, set against DT97's and W07's energies (~6 min;
+#                    collide head-on at 11 speeds, set against DT97's and W07's energies (~15 min;
 #                    out/figures/aggregate_collisions.png, out/aggregate_collisions/results.json)
 
 BUILD_DIR ?= build
