@@ -149,7 +149,7 @@ void Atlas::prepare_x(const std::function<void(const std::string&)>& bad) {
   // A bin is as wide as the narrowest cell, so the point lies in its cell or the next: one step,
   // without a branch (random points would mispredict it). Should round-off in the bin's index
   // leave the point past a second node, it lies within ulps of that node, where the stencil one
-  // cell back interpolates the same value. (A second step costs 3 ns a lookup: docs/benchmarks.md.)
+  // cell back interpolates the same value (a second step costs more than it saves: docs/benchmarks.md).
   i += static_cast<std::size_t>((i + 2 < x.count) & (ln_r >= x.nodes[std::min(i + 1, x.count - 1)]));
   const std::size_t j = cell_of(uy, y.count);
   s.bx = std::min(i > 0 ? i - 1 : 0, x.count - 4);
@@ -312,8 +312,8 @@ double Atlas::cor_unchecked(double radius1, double radius2, double velocity) con
   return gap > 0.0 ? cor_above(s, gap, velocity) : 0.0;
 }
 
-// GCC compiles the batch twice, for x86-64 and for x86-64-v3 (AVX2, FMA; 10 % faster), and the
-// loader picks the one the machine runs.
+// GCC compiles the batch twice, for x86-64 and for x86-64-v3 (AVX2, FMA), and the loader picks the
+// one the machine runs.
 BOUNCE_BATCH_CLONES void Atlas::cor_many(std::size_t n, const double* radius1, const double* radius2,
                                          const double* velocity, double* out) const noexcept {
   constexpr std::size_t block = 32;

@@ -24,50 +24,45 @@ bool machine_has_avx2() noexcept {
   return avx2;
 }
 
-[[gnu::target("avx2")]] std::size_t log4(double* x, std::size_t n) noexcept {
+[[gnu::target("avx2")]] std::size_t log_avx2(double* x, std::size_t n) noexcept {
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4) _mm256_storeu_pd(x + i, _ZGVdN4v_log(_mm256_loadu_pd(x + i)));
   return i;
 }
-[[gnu::target("avx2")]] std::size_t exp4(double* x, std::size_t n) noexcept {
+[[gnu::target("avx2")]] std::size_t exp_avx2(double* x, std::size_t n) noexcept {
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4) _mm256_storeu_pd(x + i, _ZGVdN4v_exp(_mm256_loadu_pd(x + i)));
   return i;
 }
-std::size_t log2(double* x, std::size_t n) noexcept {
+std::size_t log_sse2(double* x, std::size_t n) noexcept {
   std::size_t i = 0;
   for (; i + 2 <= n; i += 2) _mm_storeu_pd(x + i, _ZGVbN2v_log(_mm_loadu_pd(x + i)));
   return i;
 }
-std::size_t exp2(double* x, std::size_t n) noexcept {
+std::size_t exp_sse2(double* x, std::size_t n) noexcept {
   std::size_t i = 0;
   for (; i + 2 <= n; i += 2) _mm_storeu_pd(x + i, _ZGVbN2v_exp(_mm_loadu_pd(x + i)));
   return i;
 }
 
+using Lanes = std::size_t (*)(double*, std::size_t) noexcept;
+
+// The whole vectors by `four` lanes (AVX2) or `two` (SSE2), then the last few, padded with `pad`,
+// through the same function, so that a value's result does not depend on where it stands.
+void apply(double* x, std::size_t n, Lanes four, Lanes two, double pad) noexcept {
+  const Lanes lanes = machine_has_avx2() ? four : two;
+  const std::size_t i = lanes(x, n);
+  if (i == n) return;
+  double tail[4] = {pad, pad, pad, pad};
+  for (std::size_t k = i; k < n; ++k) tail[k - i] = x[k];
+  lanes(tail, 4);
+  for (std::size_t k = i; k < n; ++k) x[k] = tail[k - i];
+}
+
 }  // namespace
 
-void vector_log(double* x, std::size_t n) noexcept {
-  // The last one or few (n not a multiple of the lanes) by libmvec too, padded, so that a value's
-  // logarithm does not depend on where it stands in the array.
-  std::size_t i = machine_has_avx2() ? log4(x, n) : log2(x, n);
-  if (i < n) {
-    double tail[4] = {1.0, 1.0, 1.0, 1.0};
-    for (std::size_t k = i; k < n; ++k) tail[k - i] = x[k];
-    machine_has_avx2() ? log4(tail, 4) : log2(tail, 4);
-    for (std::size_t k = i; k < n; ++k) x[k] = tail[k - i];
-  }
-}
-
-void vector_exp(double* x, std::size_t n) noexcept {
-  std::size_t i = machine_has_avx2() ? exp4(x, n) : exp2(x, n);
-  if (i < n) {
-    double tail[4] = {0.0, 0.0, 0.0, 0.0};
-    for (std::size_t k = i; k < n; ++k) tail[k - i] = x[k];
-    machine_has_avx2() ? exp4(tail, 4) : exp2(tail, 4);
-    for (std::size_t k = i; k < n; ++k) x[k] = tail[k - i];
-  }
-}
+void vector_log(double* x, std::size_t n) noexcept { apply(x, n, log_avx2, log_sse2, 1.0); }
+void vector_exp(double* x, std::size_t n) noexcept { apply(x, n, exp_avx2, exp_sse2, 0.0); }
 
 }  // namespace bounce::analysis
 
