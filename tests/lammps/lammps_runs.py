@@ -86,10 +86,15 @@ def demo_setup(description, root, name, extra=lambda parser: None):
     parser.add_argument("--quick", action="store_true", help="a tenth of the time: a smoke run, not the result")
     extra(parser)
     args = parser.parse_args()
+    if not 1 <= args.cores <= 1024:  # the project's rule: what was typed, its value, what is allowed
+        parser.exit(2, f"{name}: --cores = {args.cores} is invalid: expected 1 to 1024 MPI ranks\n")
+    if os.path.exists(args.out) and not os.path.isdir(args.out):
+        parser.exit(2, f"{name}: --out = {args.out} is invalid: expected a folder (it is a file)\n")
     build = os.path.abspath(args.build)
     lmp, plugin = os.path.join(build, "lammps", "lmp"), os.path.join(build, "lammps", "bounceplugin.so")
     if not (os.path.exists(lmp) and os.path.exists(plugin)):
-        raise SystemExit(f"{name}: no LAMMPS build: run `make lammps` first")
+        parser.exit(2, f"{name}: --build = {args.build} is invalid: expected a build folder with lammps/lmp and "
+                       "lammps/bounceplugin.so (run `make lammps` first)\n")
     global LMP, PLUGIN, CLI
     LMP, PLUGIN, CLI = lmp, plugin, os.path.join(build, "bin", "bounce")
     os.environ.update(BOUNCE_LMP=LMP, BOUNCE_PLUGIN=PLUGIN, BOUNCE_CLI=CLI)
